@@ -1,0 +1,332 @@
+// PEDNAV_PLUGIN_LIBRARY(lib_id, lib_version, Plugin...): generates the
+// descriptors, the per-kind vtables with exception-catching trampolines, and
+// the one exported entry symbol pnp_entry_v1 of a plugin library.
+//
+//   #include <pednav_sdk/library.hpp>
+//   class MyDetector : public pednav::sdk::StepDetector { ... };
+//   PEDNAV_PLUGIN_LIBRARY("org.example.steps", "1.0.0", MyDetector)
+//
+// Build it with pednav_add_plugin() (sdk/cmake/PednavPlugin.cmake).
+#pragma once
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <new>
+#include <string>
+
+#include "node.hpp"
+
+namespace pednav::sdk::detail {
+
+inline void fill_error(pn_error_t* err, pn_status_t code, const std::string& where,
+                       const std::string& message) noexcept {
+    if (!err || err->struct_size < sizeof(pn_error_t)) return;
+    err->code = code;
+    std::snprintf(err->where, sizeof err->where, "%s", where.c_str());
+    std::snprintf(err->message, sizeof err->message, "%s", message.c_str());
+}
+
+// Maps the exception in flight to a status and fills err.
+inline pn_status_t status_from_exception(pn_error_t* err, const char* where) noexcept {
+    try {
+        throw;
+    } catch (const ConfigError& e) {
+        fill_error(err, PN_E_INVALID_CONFIG, e.where(), e.what());
+        return PN_E_INVALID_CONFIG;
+    } catch (const NumericError& e) {
+        fill_error(err, PN_E_NUMERIC, where, e.what());
+        return PN_E_NUMERIC;
+    } catch (const InputError& e) {
+        fill_error(err, PN_E_BAD_INPUT, where, e.what());
+        return PN_E_BAD_INPUT;
+    } catch (const EmitError& e) {
+        fill_error(err, e.status, where, e.what());
+        return e.status;
+    } catch (const std::bad_alloc&) {
+        fill_error(err, PN_E_OUT_OF_MEMORY, where, "out of memory");
+        return PN_E_OUT_OF_MEMORY;
+    } catch (const std::exception& e) {
+        fill_error(err, PN_E_INTERNAL, where, std::string("plugin threw: ") + e.what());
+        return PN_E_INTERNAL;
+    } catch (...) {
+        fill_error(err, PN_E_INTERNAL, where, "plugin threw a non-standard exception");
+        return PN_E_INTERNAL;
+    }
+}
+
+// What the engine holds as `self`: the node plus what is needed to rebuild it
+// on reset (a fresh object from the same params is reset by construction).
+template <class T>
+struct Instance {
+    std::unique_ptr<T> node;
+    std::string params_json;
+    CreateContext context;
+    const pnp_host_t* host = nullptr;
+};
+
+template <class T>
+std::unique_ptr<T> construct(const std::string& params_json, const CreateContext& context) {
+    Params params(params_json);
+    auto node = std::make_unique<T>(params, context);
+    params.check_no_unknown_keys();
+    return node;
+}
+
+// Reads a record whose producer may be of an older minor (smaller struct):
+// the missing tail reads as zeros.
+template <class Record, class Fn>
+inline void with_record(const pn_record_header_t* h, Fn&& fn) {
+    if (h->struct_size >= sizeof(Record)) {
+        fn(*reinterpret_cast<const Record*>(h));
+    } else {
+        Record r;
+        std::memset(&r, 0, sizeof r);
+        std::memcpy(&r, h, h->struct_size);
+        fn(r);
+    }
+}
+
+inline void dispatch(Node& n, const pn_record_header_t* h) {
+    switch (h->type) {
+        case PN_REC_IMU: with_record<pn_imu_t>(h, [&](const auto& r) { n.on_imu(r); }); break;
+        case PN_REC_MAG: with_record<pn_mag_t>(h, [&](const auto& r) { n.on_mag(r); }); break;
+        case PN_REC_BARO: with_record<pn_baro_t>(h, [&](const auto& r) { n.on_baro(r); }); break;
+        case PN_REC_GNSS: with_record<pn_gnss_t>(h, [&](const auto& r) { n.on_gnss(r); }); break;
+        case PN_REC_GAIT_PHASE:
+            with_record<pn_gait_phase_t>(h, [&](const auto& r) { n.on_gait_phase(r); });
+            break;
+        case PN_REC_STEP: with_record<pn_step_t>(h, [&](const auto& r) { n.on_step(r); }); break;
+        case PN_REC_ATTITUDE:
+            with_record<pn_attitude_t>(h, [&](const auto& r) { n.on_attitude(r); });
+            break;
+        case PN_REC_ATTITUDE_CORRECTION:
+            with_record<pn_attitude_correction_t>(h, [&](const auto& r) { n.on_attitude_correction(r); });
+            break;
+        case PN_REC_POSITION:
+            with_record<pn_position_t>(h, [&](const auto& r) { n.on_position(r); });
+            break;
+        case PN_REC_STRIDE: with_record<pn_stride_t>(h, [&](const auto& r) { n.on_stride(r); }); break;
+        default: break;  // a record type of a newer minor: ignore
+    }
+}
+
+template <class T>
+struct Trampolines {
+    static Instance<T>* self_of(void* self) { return static_cast<Instance<T>*>(self); }
+
+    static pn_status_t create(const pnp_descriptor_t*, const pnp_host_t* host,
+                              const pnp_create_info_t* info, void** instance,
+                              pn_error_t* err) noexcept {
+        if (!instance || !info) {
+            fill_error(err, PN_E_INVALID_ARGUMENT, T::kId, "create: NULL argument");
+            return PN_E_INVALID_ARGUMENT;
+        }
+        *instance = nullptr;
+        try {
+            auto inst = std::make_unique<Instance<T>>();
+            inst->params_json.assign(info->params_json ? info->params_json : "",
+                                     info->params_json ? info->params_len : 0);
+            inst->context.instance_name = info->instance_name ? info->instance_name : "";
+            inst->context.mount = info->mount ? info->mount : "";
+            inst->context.imu_rate_hz = info->imu_rate_hz;
+            inst->host = host;
+            inst->node = construct<T>(inst->params_json, inst->context);
+            inst->node->bind_(host, nullptr);
+            *instance = inst.release();
+            return PN_OK;
+        } catch (...) {
+            return status_from_exception(err, T::kId);
+        }
+    }
+    static void destroy(void* self) noexcept { delete self_of(self); }
+    static pn_status_t reset(void* self, pn_error_t* err) noexcept {
+        auto* inst = self_of(self);
+        try {
+            auto fresh = construct<T>(inst->params_json, inst->context);
+            fresh->bind_(inst->host, nullptr);
+            inst->node = std::move(fresh);
+            return PN_OK;
+        } catch (...) {
+            return status_from_exception(err, T::kId);
+        }
+    }
+    static pn_status_t process(void* self, const pn_record_header_t* const* records, uint32_t count,
+                               const pnp_sink_t* sink, pn_error_t* err) noexcept {
+        Node& n = *self_of(self)->node;
+        n.bind_sink_(sink);
+        try {
+            for (uint32_t i = 0; i < count; ++i) dispatch(n, records[i]);
+        } catch (...) {
+            n.bind_sink_(nullptr);
+            return status_from_exception(err, T::kId);
+        }
+        n.bind_sink_(nullptr);
+        return PN_OK;
+    }
+    static pn_status_t flush(void* self, const pnp_sink_t* sink, pn_error_t* err) noexcept {
+        Node& n = *self_of(self)->node;
+        n.bind_sink_(sink);
+        try {
+            n.on_flush();
+        } catch (...) {
+            n.bind_sink_(nullptr);
+            return status_from_exception(err, T::kId);
+        }
+        n.bind_sink_(nullptr);
+        return PN_OK;
+    }
+    static pn_status_t reconfigure(void* self, const char* json, uint32_t len, pn_error_t* err) noexcept {
+        auto* inst = self_of(self);
+        try {
+            std::string text(json ? json : "", json ? len : 0);
+            Params params(text);
+            if (!inst->node->reconfigure(params)) {
+                fill_error(err, PN_E_UNSUPPORTED, T::kId, "this plugin cannot be reconfigured live");
+                return PN_E_UNSUPPORTED;
+            }
+            params.check_no_unknown_keys();
+            inst->params_json = text;
+            return PN_OK;
+        } catch (...) {
+            return status_from_exception(err, T::kId);
+        }
+    }
+    static int64_t latency_ns(const void* self) noexcept {
+        return static_cast<const Instance<T>*>(self)->node->latency_ns();
+    }
+    static const void* get_extension(const void*, const char*) noexcept { return nullptr; }
+
+    static pn_status_t unsupported(pn_error_t* err, const char* what) {
+        fill_error(err, PN_E_UNSUPPORTED, T::kId, std::string(what) + " is not supported by this plugin");
+        return PN_E_UNSUPPORTED;
+    }
+    static pn_status_t set_start(void* self, const double pos[3], double heading, pn_error_t* err) noexcept {
+        try {
+            return self_of(self)->node->set_start(pos, heading) ? PN_OK : unsupported(err, "set_start");
+        } catch (...) {
+            return status_from_exception(err, T::kId);
+        }
+    }
+    static pn_status_t set_attitude(void* self, int64_t t_ns, const double q[4], pn_error_t* err) noexcept {
+        try {
+            return self_of(self)->node->set_attitude(t_ns, q) ? PN_OK : unsupported(err, "set_attitude");
+        } catch (...) {
+            return status_from_exception(err, T::kId);
+        }
+    }
+    static pn_status_t load_map(void* self, const char* format, const void* bytes, size_t size,
+                                pn_error_t* err) noexcept {
+        try {
+            return self_of(self)->node->load_map(format ? format : "", bytes, size)
+                       ? PN_OK
+                       : unsupported(err, "load_map");
+        } catch (...) {
+            return status_from_exception(err, T::kId);
+        }
+    }
+
+    static constexpr pnp_node_ops_t node_ops() {
+        return pnp_node_ops_t{0,       0,           &destroy,    &reset,         &process,
+                              &flush,  &reconfigure, &latency_ns, &get_extension};
+    }
+};
+
+// Per-kind vtable for T.
+template <class T, pnp_kind_t Kind = T::kKind>
+struct OpsFor;
+template <class T>
+struct OpsFor<T, PNP_KIND_STEP_DETECTOR> {
+    static constexpr pnp_step_detector_ops_t make() {
+        pnp_step_detector_ops_t o{Trampolines<T>::node_ops()};
+        o.node.struct_size = sizeof(o);
+        return o;
+    }
+};
+template <class T>
+struct OpsFor<T, PNP_KIND_ATTITUDE_ESTIMATOR> {
+    static constexpr pnp_attitude_estimator_ops_t make() {
+        pnp_attitude_estimator_ops_t o{Trampolines<T>::node_ops(), &Trampolines<T>::set_attitude};
+        o.node.struct_size = sizeof(o);
+        return o;
+    }
+};
+template <class T>
+struct OpsFor<T, PNP_KIND_POSITION_FILTER> {
+    static constexpr pnp_position_filter_ops_t make() {
+        pnp_position_filter_ops_t o{Trampolines<T>::node_ops(), &Trampolines<T>::set_start};
+        o.node.struct_size = sizeof(o);
+        return o;
+    }
+};
+template <class T>
+struct OpsFor<T, PNP_KIND_MAP_MATCHER> {
+    static constexpr pnp_map_matcher_ops_t make() {
+        pnp_map_matcher_ops_t o{Trampolines<T>::node_ops(), &Trampolines<T>::load_map,
+                                &Trampolines<T>::set_start};
+        o.node.struct_size = sizeof(o);
+        return o;
+    }
+};
+
+template <class T, class = void>
+struct FeaturesOf {
+    static constexpr const char* const* value = nullptr;
+};
+template <class T>
+struct FeaturesOf<T, std::void_t<decltype(T::kFeatures)>> {
+    static constexpr const char* const* value = T::kFeatures;
+};
+template <class T, class = void>
+struct SchemaOf {
+    static constexpr const char* value = nullptr;
+};
+template <class T>
+struct SchemaOf<T, std::void_t<decltype(T::kParamsSchema)>> {
+    static constexpr const char* value = T::kParamsSchema;
+};
+
+template <class T>
+struct DescriptorOf {
+    static constexpr auto ops = OpsFor<T>::make();
+    static constexpr pnp_descriptor_t value{PN_ABI_VERSION,
+                                            sizeof(pnp_descriptor_t),
+                                            T::kId,
+                                            T::kName,
+                                            T::kVersion,
+                                            "pednav",
+                                            T::kDescription,
+                                            FeaturesOf<T>::value,
+                                            SchemaOf<T>::value,
+                                            T::kKind,
+                                            1,
+                                            T::kConsumes,
+                                            T::kProduces,
+                                            &Trampolines<T>::create,
+                                            &ops.node};
+};
+
+template <class... Ts>
+struct LibraryOf {
+    static constexpr const pnp_descriptor_t* plugins[] = {&DescriptorOf<Ts>::value...};
+    static constexpr uint32_t count = sizeof...(Ts);
+};
+
+}  // namespace pednav::sdk::detail
+
+#define PEDNAV_PLUGIN_LIBRARY(LIB_ID, LIB_VERSION, ...)                                        \
+    extern "C" __attribute__((visibility("default"))) const pnp_library_t* pnp_entry_v1(void) \
+        noexcept {                                                                             \
+        using Lib_ = ::pednav::sdk::detail::LibraryOf<__VA_ARGS__>;                            \
+        static constexpr pnp_library_t library{PN_ABI_VERSION,                                 \
+                                               sizeof(pnp_library_t),                          \
+                                               LIB_ID,                                         \
+                                               LIB_VERSION,                                    \
+                                               nullptr,                                        \
+                                               nullptr,                                        \
+                                               Lib_::count,                                    \
+                                               0,                                              \
+                                               Lib_::plugins};                                 \
+        return &library;                                                                       \
+    }
