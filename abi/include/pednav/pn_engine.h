@@ -49,8 +49,9 @@ typedef struct pn_engine_create_info_t {
     const pnp_library_t *const *static_libraries; /* linked-in plugin libraries (iOS, tests) */
     pn_log_fn log;                 /* may be NULL */
     void *log_user;
-    uint32_t output_queue_capacity; /* records kept until polled; 0 = 65536. When full the
-                                       oldest are dropped and counted in describe. */
+    uint32_t output_queue_capacity; /* records kept until polled; 0 = 8192. When full, new
+                                       outputs are dropped and counted in describe
+                                       (counters.outputs_dropped); get_latest still sees them. */
     uint32_t reserved;
 } pn_engine_create_info_t;
 
@@ -104,7 +105,7 @@ PN_API pn_status_t pn_engine_set_start(pn_engine_t *engine, const double pos_enu
 /* Pops the oldest output record into *out: PN_OK, or PN_NO_DATA when empty. */
 PN_API pn_status_t pn_engine_poll(pn_engine_t *engine, pn_output_t *out);
 /* Copies the newest output of the given type without popping anything:
- * PN_OK, or PN_NO_DATA if none yet. */
+ * PN_OK, or PN_NO_DATA if none yet. Call from the pushing thread. */
 PN_API pn_status_t pn_engine_get_latest(pn_engine_t *engine, pn_record_type_t type,
                                         pn_output_t *out);
 /* Which record types reach the output queue (PN_REC_MASK bits). By default:

@@ -46,6 +46,11 @@ extern "C" {
 #define PNP_HAS_SLOT(ptr, type, field)                                        \
     ((ptr) != NULL && (ptr)->struct_size >= offsetof(type, field) + sizeof((ptr)->field) && \
      (ptr)->field != NULL)
+/* The same for the kind-specific slots of a kind vtable (pnp_*_ops_t), whose
+ * struct_size lives in its node prefix. */
+#define PNP_HAS_KIND_SLOT(ptr, type, field)                                   \
+    ((ptr) != NULL && (ptr)->node.struct_size >= offsetof(type, field) + sizeof((ptr)->field) && \
+     (ptr)->field != NULL)
 
 /* Plugin kinds. */
 typedef int32_t pnp_kind_t;
@@ -123,7 +128,9 @@ typedef struct pnp_node_ops_t {
     /* [thread-safe] Optional extension by id ("vendor.name/rev"), NULL if none. */
     const void *(*get_extension)(const void *self, const char *id)PNP_NOEXCEPT;
 } pnp_node_ops_t;
-#define PNP_NODE_OPS_MIN_SIZE (offsetof(pnp_node_ops_t, get_extension) + sizeof(void *))
+/* destroy, reset and process are required; the slots after them are optional
+ * tail slots (test with PNP_HAS_SLOT), so this minimum never grows. */
+#define PNP_NODE_OPS_MIN_SIZE (offsetof(pnp_node_ops_t, process) + sizeof(void *))
 
 /* Kind-specific control slots follow the prefix. All optional. */
 typedef struct pnp_step_detector_ops_t {

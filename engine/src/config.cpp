@@ -1,0 +1,95 @@
+#include "config.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace pednav::engine {
+
+const char* role_name(Role role) {
+    switch (role) {
+        case Role::step_detector: return "step_detector";
+        case Role::attitude_estimator: return "attitude_estimator";
+        case Role::position_filter: return "position_filter";
+        case Role::map_matcher: return "map_matcher";
+    }
+    return "unknown";
+}
+
+namespace {
+
+[[noreturn]] void fail(const std::string& where, const std::string& message) {
+    throw ConfigProblem{PN_E_INVALID_CONFIG, where, message};
+}
+
+void check_keys(const nlohmann::json& obj, const std::string& where,
+                std::initializer_list<const char*> allowed) {
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+        bool ok = false;
+        for (const char* a : allowed) ok = ok || it.key() == a;
+        if (!ok) fail(where + "/" + it.key(), "unknown key \"" + it.key() + "\" in " + (where.empty() ? "the config" : where));
+    }
+}
+
+StageConfig parse_stage(const nlohmann::json& j, Role role, const std::string& where) {
+    if (!j.is_object()) fail(where, std::string(role_name(role)) + " must be an object with \"plugin\" and \"params\"");
+    check_keys(j, where, {"plugin", "params"});
+    auto p = j.find("plugin");
+    if (p == j.end() || !p->is_string() || p->get<std::string>().empty())
+        fail(where + "/plugin", "\"plugin\" must name a plugin id");
+    StageConfig s{role, p->get<std::string>(), "{}", where};
+    auto params = j.find("params");
+    if (params != j.end() && !params->is_null()) {
+        if (!params->is_object()) fail(where + "/params", "\"params\" must be an object");
+        s.params_json = params->dump();
+    }
+    return s;
+}
+
+}  // namespace
+
+EngineConfig parse_config(const std::string& text, const std::string& mount_override) {
+    nlohmann::json doc;
+    try {
+        doc = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        fail("", std::string("config is not valid JSON: ") + e.what());
+    }
+    if (!doc.is_object()) fail("", "config must be a JSON object");
+    check_keys(doc, "", {"format", "mount", "imu_rate_hz", "pipelines", "description"});
+    auto format = doc.find("format");
+    if (format == doc.end() || !format->is_string() || format->get<std::string>() != "pednav-config/1")
+        fail("/format", "\"format\" must be \"pednav-config/1\"");
+
+    EngineConfig cfg;
+    if (!mount_override.empty()) {
+        cfg.mount = mount_override;
+    } else {
+        auto m = doc.find("mount");
+        if (m == doc.end() || !m->is_string()) fail("/mount", "\"mount\" must be \"foot\", \"chest\" or \"waist\"");
+        cfg.mount = m->get<std::string>();
+    }
+    if (cfg.mount != "foot" && cfg.mount != "chest" && cfg.mount != "waist")
+        fail("/mount", "mount \"" + cfg.mount + "\" is not one of foot, chest, waist");
+    if (auto r = doc.find("imu_rate_hz"); r != doc.end()) {
+        if (!r->is_number() || r->get<double>() < 0 || r->get<double>() > 100000)
+            fail("/imu_rate_hz", "\"imu_rate_hz\" must be a number of Hz in [0, 100000]");
+        cfg.imu_rate_hz = r->get<double>();
+    }
+    auto pipelines = doc.find("pipelines");
+    if (pipelines == doc.end() || !pipelines->is_object()) fail("/pipelines", "\"pipelines\" must be an object keyed by mount");
+    check_keys(*pipelines, "/pipelines", {"foot", "chest", "waist"});
+    auto pipe = pipelines->find(cfg.mount);
+    if (pipe == pipelines->end())
+        throw ConfigProblem{PN_E_NOT_FOUND, "/pipelines/" + cfg.mount, "the config has no pipeline for mount " + cfg.mount};
+    const std::string base = "/pipelines/" + cfg.mount;
+    if (!pipe->is_object()) fail(base, "a pipeline must be an object keyed by role");
+    check_keys(*pipe, base, {"step_detector", "attitude_estimator", "position_filter", "map_matcher"});
+    for (int r = 0; r < kRoleCount; ++r) {
+        const Role role = static_cast<Role>(r);
+        auto s = pipe->find(role_name(role));
+        if (s != pipe->end()) cfg.stages.push_back(parse_stage(*s, role, base + "/" + role_name(role)));
+    }
+    if (cfg.stages.empty()) fail(base, "the pipeline for " + cfg.mount + " has no stage");
+    return cfg;
+}
+
+}  // namespace pednav::engine

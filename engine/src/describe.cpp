@@ -1,0 +1,99 @@
+// Engine::describe_json: what was loaded, refused and wired, as JSON.
+#include <nlohmann/json.hpp>
+
+#include "engine.hpp"
+#include "describe.hpp"
+#include "record_checks.hpp"
+
+namespace pednav::engine {
+
+namespace {
+
+nlohmann::json type_names(uint64_t mask) {
+    nlohmann::json a = nlohmann::json::array();
+    for (pn_record_type_t t = 0; t < 64; ++t)
+        if (mask & PN_REC_MASK(t)) a.push_back(record_type_name(t));
+    return a;
+}
+
+nlohmann::json plugin_json(const pnp_descriptor_t* d, const std::string& library) {
+    nlohmann::json p = {{"id", d->id},
+                        {"name", d->name ? d->name : ""},
+                        {"version", d->version ? d->version : ""},
+                        {"vendor", d->vendor ? d->vendor : ""},
+                        {"description", d->description ? d->description : ""},
+                        {"kind", kind_name(d->kind)},
+                        {"kind_version", d->kind_version},
+                        {"library", library},
+                        {"consumes", type_names(d->consumes)},
+                        {"produces", type_names(d->produces)}};
+    nlohmann::json features = nlohmann::json::array();
+    for (const char* const* f = d->features; f && *f; ++f) features.push_back(*f);
+    p["features"] = features;
+    p["params_schema"] = nullptr;
+    if (d->params_schema_json) {
+        auto schema = nlohmann::json::parse(d->params_schema_json, nullptr, false);
+        p["params_schema"] = schema.is_discarded() ? nlohmann::json(d->params_schema_json) : schema;
+    }
+    return p;
+}
+
+}  // namespace
+
+nlohmann::json describe_loader(const Loader& loader) {
+    nlohmann::json j;
+    j["libraries"] = nlohmann::json::array();
+    for (size_t i = 0; i < loader.libraries().size(); ++i) {
+        const auto& l = loader.libraries()[i];
+        nlohmann::json ids = nlohmann::json::array();
+        for (const auto& p : loader.plugins())
+            if (p.library_index == i) ids.push_back(p.descriptor->id);
+        j["libraries"].push_back({{"path", l.path},
+                                  {"id", l.library->id ? l.library->id : ""},
+                                  {"version", l.library->version ? l.library->version : ""},
+                                  {"plugins", ids}});
+    }
+    j["plugins"] = nlohmann::json::array();
+    for (const auto& p : loader.plugins())
+        j["plugins"].push_back(plugin_json(p.descriptor, loader.libraries()[p.library_index].path));
+    j["rejected"] = nlohmann::json::array();
+    for (const auto& r : loader.rejected())
+        j["rejected"].push_back({{"path", r.path}, {"status", pn_status_name(r.status)}, {"reason", r.reason}});
+    return j;
+}
+
+std::string Engine::describe_json() const {
+    nlohmann::json j = describe_loader(*loader_);
+    j["engine"] = {{"version", pn_version_string()},
+                   {"abi_version", std::to_string(PN_ABI_MAJOR) + "." + std::to_string(PN_ABI_MINOR)}};
+    nlohmann::json stages = nlohmann::json::array(), feedback = nlohmann::json::array();
+    for (const auto& s : scheduler_->stages()) {
+        stages.push_back({{"role", role_name(s->role)},
+                          {"instance", s->instance_name},
+                          {"plugin", s->plugin_id},
+                          {"version", s->descriptor->version ? s->descriptor->version : ""},
+                          {"latency_ns", s->latency_ns},
+                          {"records_in", s->records_in},
+                          {"records_out", s->records_out},
+                          {"failures", s->failures},
+                          {"resets", s->resets}});
+        for (const auto& in : s->feedback) {
+            const auto& from = scheduler_->stages()[in.queue - 1];
+            feedback.push_back({{"from", from->instance_name}, {"to", s->instance_name}, {"types", type_names(in.mask)}});
+        }
+    }
+    j["pipeline"] = {{"mount", config_.mount},
+                     {"imu_rate_hz", config_.imu_rate_hz},
+                     {"latency_ns", scheduler_->latency_ns()},
+                     {"stages", stages},
+                     {"feedback", feedback}};
+    j["counters"] = {{"records_in", scheduler_->records_in()},
+                     {"rejected_inputs", rejected_inputs_},
+                     {"outputs_queued", scheduler_->outputs().size()},
+                     {"outputs_dropped", scheduler_->outputs().dropped()},
+                     {"warnings", scheduler_->warning_count()}};
+    j["warnings"] = scheduler_->warnings();
+    return j.dump(2);
+}
+
+}  // namespace pednav::engine

@@ -1,0 +1,228 @@
+#include "engine.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "record_checks.hpp"
+
+namespace pednav::engine {
+
+void set_error(pn_error_t* err, pn_status_t code, const std::string& where, const std::string& message,
+               int32_t detail) {
+    if (!err || err->struct_size < sizeof(pn_error_t)) return;
+    err->code = code;
+    err->detail = detail;
+    std::snprintf(err->where, sizeof err->where, "%s", where.c_str());
+    std::snprintf(err->message, sizeof err->message, "%s", message.c_str());
+}
+
+namespace {
+
+void host_log(const pnp_host_t* host, pnp_log_level_t level, const char* msg) noexcept {
+    const Stage* s = static_cast<const Stage*>(host->host_data);
+    const Engine* e = static_cast<const Engine*>(s->owner);
+    if (level >= PNP_LOG_WARN) s->scheduler->warn(s->instance_name + ": " + (msg ? msg : ""));
+    e->log(level, s->instance_name.c_str(), msg ? msg : "");
+}
+
+Role role_for_kind(pnp_kind_t kind) {
+    switch (kind) {
+        case PNP_KIND_STEP_DETECTOR: return Role::step_detector;
+        case PNP_KIND_ATTITUDE_ESTIMATOR: return Role::attitude_estimator;
+        case PNP_KIND_POSITION_FILTER: return Role::position_filter;
+        default: return Role::map_matcher;
+    }
+}
+
+std::string available_ids(const Loader& loader, Role role) {
+    std::string list;
+    for (const auto& p : loader.plugins())
+        if (role_for_kind(p.descriptor->kind) == role) list += (list.empty() ? "" : ", ") + std::string(p.descriptor->id);
+    return list.empty() ? "none" : list;
+}
+
+}  // namespace
+
+Engine::Engine(const pn_engine_create_info_t& info) : loader_(std::make_unique<Loader>()) {
+    for (auto& t : last_t_ns_) t = INT64_MIN;
+    log_ = info.log;
+    log_user_ = info.log_user;
+    for (uint32_t i = 0; i < info.plugin_dir_count; ++i)
+        if (info.plugin_dirs && info.plugin_dirs[i]) loader_->scan_directory(info.plugin_dirs[i]);
+    for (uint32_t i = 0; i < info.static_library_count; ++i)
+        if (info.static_libraries) loader_->add_static_library(info.static_libraries[i], "<static:" + std::to_string(i) + ">");
+    for (const auto& r : loader_->rejected())
+        log(PNP_LOG_WARN, "engine", ("rejected plugin file " + r.path + ": " + r.reason).c_str());
+
+    const std::string text = info.config_len ? std::string(info.config_json, info.config_len)
+                                             : std::string(info.config_json ? info.config_json : "");
+    config_ = parse_config(text);
+
+    std::vector<std::unique_ptr<Stage>> stages;
+    struct Destroyer {  // destroys instances created so far if a later one fails
+        std::vector<std::unique_ptr<Stage>>& v;
+        bool armed = true;
+        ~Destroyer() {
+            if (armed)
+                for (auto& s : v)
+                    if (s->self) s->ops->destroy(s->self);
+        }
+    } guard{stages};
+    for (const StageConfig& sc : config_.stages) {
+        const AvailablePlugin* p = loader_->find(sc.plugin_id);
+        if (!p) {
+            const std::string why = loader_->rejection_for(sc.plugin_id);
+            throw ConfigProblem{PN_E_NOT_FOUND, sc.pointer + "/plugin",
+                                "plugin " + sc.plugin_id + " is not available: " +
+                                    (why.empty() ? "no loaded library provides it (" + std::string(role_name(sc.role)) +
+                                                       " plugins found: " + available_ids(*loader_, sc.role) + ")"
+                                                 : "its library was rejected: " + why)};
+        }
+        const pnp_descriptor_t* d = p->descriptor;
+        if (role_for_kind(d->kind) != sc.role)
+            throw ConfigProblem{PN_E_INVALID_CONFIG, sc.pointer + "/plugin",
+                                "plugin " + sc.plugin_id + " is a " + kind_name(d->kind) + ", not a " + role_name(sc.role)};
+        auto stage = std::make_unique<Stage>();
+        stage->role = sc.role;
+        stage->instance_name = config_.mount + "/" + role_name(sc.role);
+        stage->plugin_id = sc.plugin_id;
+        stage->descriptor = d;
+        stage->ops = d->ops;
+        stage->owner = this;
+        stage->host.abi_version = PN_ABI_VERSION;
+        stage->host.struct_size = sizeof(pnp_host_t);
+        stage->host.host_data = stage.get();
+        stage->host.log = &host_log;
+        pn_error_t err{};
+        err.struct_size = sizeof err;
+        if (PN_FAILED(loader_->ensure_init(p->library_index, &stage->host, &err)))
+            throw ConfigProblem{err.code ? err.code : PN_E_INTERNAL, sc.pointer + "/plugin",
+                                "library of " + sc.plugin_id + " refused to initialise: " + err.message};
+        pnp_create_info_t ci{};
+        ci.abi_version = PN_ABI_VERSION;
+        ci.struct_size = sizeof ci;
+        ci.params_json = sc.params_json.c_str();
+        ci.params_len = static_cast<uint32_t>(sc.params_json.size());
+        ci.instance_name = stage->instance_name.c_str();
+        ci.mount = config_.mount.c_str();
+        ci.imu_rate_hz = config_.imu_rate_hz;
+        const pn_status_t st = d->create(d, &stage->host, &ci, &stage->self, &err);
+        if (PN_FAILED(st) || !stage->self) {
+            const std::string inner = err.where;
+            throw ConfigProblem{PN_FAILED(st) ? st : PN_E_INTERNAL,
+                                sc.pointer + "/params" + (inner.rfind('/', 0) == 0 ? inner : std::string()),
+                                sc.plugin_id + " rejected its params: " + (err.message[0] ? err.message : "no reason given")};
+        }
+        stages.push_back(std::move(stage));
+    }
+    guard.armed = false;
+    scheduler_ = std::make_unique<Scheduler>(std::move(stages), info.output_queue_capacity);
+}
+
+Engine::~Engine() {
+    scheduler_.reset();  // instances before libraries
+    loader_.reset();
+}
+
+void Engine::log(int32_t level, const char* source, const char* msg) const {
+    if (log_) log_(log_user_, level, source, msg);
+}
+
+pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
+    if (!r) {
+        set_error(err, PN_E_INVALID_ARGUMENT, "input", "record pointer is NULL");
+        return PN_E_INVALID_ARGUMENT;
+    }
+    if (!(kInputTypes & PN_REC_MASK(r->type)) || r->type >= PN_REC_TYPE_COUNT) {
+        set_error(err, PN_E_INVALID_ARGUMENT, "input",
+                  "record type " + std::to_string(r->type) + " is not an input type (imu, mag, baro, gnss)");
+        return PN_E_INVALID_ARGUMENT;
+    }
+    if (r->struct_size < min_record_size(r->type) || r->struct_size > PN_RECORD_MAX_SIZE) {
+        set_error(err, PN_E_INVALID_ARGUMENT, "input",
+                  std::string(record_type_name(r->type)) + " record has struct_size " + std::to_string(r->struct_size) +
+                      ", expected at least " + std::to_string(min_record_size(r->type)));
+        return PN_E_INVALID_ARGUMENT;
+    }
+    char at[64];
+    std::snprintf(at, sizeof at, " at t=%.6f s", static_cast<double>(r->t_ns) * 1e-9);
+    const std::string bad = check_record_values(r);
+    if (!bad.empty()) {
+        set_error(err, PN_E_NUMERIC, "input", std::string(record_type_name(r->type)) + " sample" + at + ": " + bad);
+        return PN_E_NUMERIC;
+    }
+    if (r->t_ns < last_any_t_ns_ || r->t_ns <= last_t_ns_[r->type]) {
+        const int64_t prev = std::max(last_any_t_ns_, last_t_ns_[r->type]);
+        char msg[160];
+        std::snprintf(msg, sizeof msg, "%s sample%s is not after the previous sample at t=%.6f s",
+                      record_type_name(r->type), at, static_cast<double>(prev) * 1e-9);
+        set_error(err, PN_E_OUT_OF_ORDER, "input", msg);
+        return PN_E_OUT_OF_ORDER;
+    }
+    return PN_OK;
+}
+
+pn_status_t Engine::stage_failure_status(pn_error_t* err) {
+    StageFailure f = scheduler_->take_failure();
+    if (f.status == PN_OK) return PN_OK;
+    log(PNP_LOG_ERROR, f.where.c_str(), f.message.c_str());
+    set_error(err, f.status, f.where, f.message);
+    return f.status;
+}
+
+pn_status_t Engine::push(const pn_record_header_t* r, pn_error_t* err) {
+    const pn_status_t st = check_input(r, err);
+    if (PN_FAILED(st)) {
+        ++rejected_inputs_;
+        return st;
+    }
+    last_t_ns_[r->type] = r->t_ns;
+    last_any_t_ns_ = r->t_ns;
+    scheduler_->push(r);
+    return stage_failure_status(err);
+}
+
+pn_status_t Engine::flush(pn_error_t* err) {
+    scheduler_->flush();
+    return stage_failure_status(err);
+}
+
+pn_status_t Engine::reset(pn_error_t* err) {
+    for (auto& t : last_t_ns_) t = INT64_MIN;
+    last_any_t_ns_ = INT64_MIN;
+    return scheduler_->reset(err);
+}
+
+pn_status_t Engine::set_start(const double pos_enu_m[3], double heading_deg, pn_error_t* err) {
+    const double zero[3] = {0, 0, 0};
+    const double* pos = pos_enu_m ? pos_enu_m : zero;
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(pos[i])) {
+            set_error(err, PN_E_INVALID_ARGUMENT, "start", "start position must be finite");
+            return PN_E_INVALID_ARGUMENT;
+        }
+    const double heading_rad = std::isnan(heading_deg) ? NAN : heading_deg * M_PI / 180.0;
+    bool accepted = false;
+    for (const auto& s : scheduler_->stages()) {
+        pn_status_t st = PN_E_UNSUPPORTED;
+        if (s->role == Role::position_filter) {
+            auto* ops = reinterpret_cast<const pnp_position_filter_ops_t*>(s->ops);
+            if (PNP_HAS_KIND_SLOT(ops, pnp_position_filter_ops_t, set_start)) st = ops->set_start(s->self, pos, heading_rad, err);
+        } else if (s->role == Role::map_matcher) {
+            auto* ops = reinterpret_cast<const pnp_map_matcher_ops_t*>(s->ops);
+            if (PNP_HAS_KIND_SLOT(ops, pnp_map_matcher_ops_t, set_start)) st = ops->set_start(s->self, pos, heading_rad, err);
+        } else {
+            continue;
+        }
+        if (st == PN_OK) accepted = true;
+        else if (st != PN_E_UNSUPPORTED) return st;
+    }
+    if (!accepted) {
+        set_error(err, PN_E_UNSUPPORTED, "start", "no stage of this pipeline accepts a start point");
+        return PN_E_UNSUPPORTED;
+    }
+    return PN_OK;
+}
+
+}  // namespace pednav::engine

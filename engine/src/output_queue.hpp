@@ -1,0 +1,62 @@
+// The engine's output queue: single producer (the pushing thread) and single
+// consumer (the polling thread), fixed capacity allocated at create. When it is
+// full new outputs are dropped and counted; the newest output of each type is
+// also kept for get_latest.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include <pednav/pn_engine.h>
+
+namespace pednav::engine {
+
+class OutputQueue {
+public:
+    explicit OutputQueue(size_t capacity) : slots_(capacity ? capacity : 8192) {}
+
+    void push(const pn_record_header_t* r) {
+        if (r->type < PN_REC_TYPE_COUNT) {
+            std::memcpy(latest_[r->type].bytes, r, r->struct_size);
+            has_latest_[r->type] = true;
+        }
+        const uint64_t tail = tail_.load(std::memory_order_relaxed);
+        if (tail - head_.load(std::memory_order_acquire) >= slots_.size()) {
+            ++dropped_;
+            return;
+        }
+        std::memcpy(slots_[tail % slots_.size()].bytes, r, r->struct_size);
+        tail_.store(tail + 1, std::memory_order_release);
+    }
+    bool pop(pn_output_t* out) {
+        const uint64_t head = head_.load(std::memory_order_relaxed);
+        if (head == tail_.load(std::memory_order_acquire)) return false;
+        const pn_output_t& s = slots_[head % slots_.size()];
+        std::memcpy(out, &s, s.header.struct_size);
+        head_.store(head + 1, std::memory_order_release);
+        return true;
+    }
+    bool latest(pn_record_type_t type, pn_output_t* out) const {
+        if (type >= PN_REC_TYPE_COUNT || !has_latest_[type]) return false;
+        std::memcpy(out, &latest_[type], latest_[type].header.struct_size);
+        return true;
+    }
+    void clear() {
+        head_.store(tail_.load());
+        for (bool& h : has_latest_) h = false;
+    }
+    uint64_t dropped() const { return dropped_; }
+    size_t size() const { return tail_.load() - head_.load(); }
+    size_t capacity() const { return slots_.size(); }
+
+private:
+    std::vector<pn_output_t> slots_;
+    pn_output_t latest_[PN_REC_TYPE_COUNT] = {};
+    bool has_latest_[PN_REC_TYPE_COUNT] = {};
+    std::atomic<uint64_t> head_{0}, tail_{0};
+    uint64_t dropped_ = 0;
+};
+
+}  // namespace pednav::engine

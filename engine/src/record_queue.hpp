@@ -1,0 +1,58 @@
+// A time-ordered FIFO of records read by several consumers, each with its own
+// cursor (a sequence number). Slots are fixed 512-byte cells in a power-of-two
+// ring that doubles when full and is reused otherwise, so steady-state
+// streaming allocates nothing.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include <pednav/pn_types.h>
+
+namespace pednav::engine {
+
+class RecordQueue {
+public:
+    using Seq = uint64_t;
+
+    explicit RecordQueue(size_t initial_capacity = 64) {
+        size_t c = 1;
+        while (c < initial_capacity) c <<= 1;
+        slots_.resize(c);
+    }
+
+    void push(const pn_record_header_t* r) {
+        if (end_ - begin_ == slots_.size()) grow();
+        Slot& s = slots_[end_ & (slots_.size() - 1)];
+        std::memcpy(s.bytes, r, r->struct_size);
+        ++end_;
+    }
+    Seq begin() const { return begin_; }
+    Seq end() const { return end_; }
+    const pn_record_header_t* at(Seq seq) const {
+        return reinterpret_cast<const pn_record_header_t*>(slots_[seq & (slots_.size() - 1)].bytes);
+    }
+    // Frees every slot before `seq` (all consumers are past it).
+    void release_until(Seq seq) {
+        if (seq > begin_) begin_ = seq < end_ ? seq : end_;
+    }
+    void clear() { begin_ = end_; }
+    size_t capacity() const { return slots_.size(); }
+
+private:
+    struct alignas(8) Slot {
+        unsigned char bytes[PN_RECORD_MAX_SIZE];
+    };
+    void grow() {
+        std::vector<Slot> bigger(slots_.size() * 2);
+        for (Seq s = begin_; s < end_; ++s)
+            bigger[s & (bigger.size() - 1)] = slots_[s & (slots_.size() - 1)];
+        slots_.swap(bigger);
+    }
+
+    std::vector<Slot> slots_;
+    Seq begin_ = 0, end_ = 0;
+};
+
+}  // namespace pednav::engine

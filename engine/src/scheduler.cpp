@@ -1,0 +1,313 @@
+#include "scheduler.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "record_checks.hpp"
+
+namespace pednav::engine {
+
+namespace {
+
+constexpr int64_t kInf = INT64_MAX;
+constexpr uint32_t kMaxBatch = 32;
+constexpr size_t kMaxWarningsKept = 200;
+
+int64_t saturating_sub(int64_t a, int64_t b) {
+    if (a == kInf) return kInf;
+    if (a == INT64_MIN) return INT64_MIN;
+    return (b > 0 && a < INT64_MIN + b) ? INT64_MIN : a - b;
+}
+
+pn_status_t sink_emit(const pnp_sink_t* sink, const pn_record_header_t* record) noexcept {
+    Stage* s = static_cast<Stage*>(sink->sink_data);
+    return s->scheduler->accept(*s, record);
+}
+
+std::string seconds(int64_t t_ns) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "t=%.6f s", static_cast<double>(t_ns) * 1e-9);
+    return buf;
+}
+
+}  // namespace
+
+Scheduler::Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity)
+    : stages_(std::move(stages)),
+      outputs_(output_capacity),
+      output_mask_(PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_STEP)) {
+    for (size_t k = 0; k < stages_.size(); ++k) {
+        Stage& s = *stages_[k];
+        s.scheduler = this;
+        s.index = static_cast<int>(k);
+        s.sink.sink_data = &s;
+        s.sink.emit = &sink_emit;
+    }
+    wire();
+}
+
+Scheduler::~Scheduler() {
+    for (auto& s : stages_)
+        if (s->self) s->ops->destroy(s->self);
+}
+
+void Scheduler::wire() {
+    const size_t n = stages_.size();
+    queues_.assign(n + 1, RecordQueue(64));
+    queue_wanted_.assign(n + 1, 0);
+    for (size_t k = 0; k < n; ++k) {
+        Stage& s = *stages_[k];
+        const uint64_t consumes = s.descriptor->consumes;
+        if (uint64_t m = consumes & kInputTypes) s.forward.push_back({0, m, 0});
+        for (size_t i = 0; i < n; ++i) {
+            if (i == k) continue;
+            const uint64_t m = consumes & stages_[i]->descriptor->produces;
+            if (!m) continue;
+            (i < k ? s.forward : s.feedback).push_back({static_cast<int>(i + 1), m, 0});
+        }
+        for (const auto& in : s.forward) queue_wanted_[in.queue] |= in.mask;
+        for (const auto& in : s.feedback) queue_wanted_[in.queue] |= in.mask;
+    }
+    // The last producer of each type feeds the output queue.
+    uint64_t seen = 0;
+    for (size_t k = n; k-- > 0;) {
+        const uint64_t p = stages_[k]->descriptor->produces;
+        final_producer_mask_[k] = p & ~seen;
+        seen |= p;
+    }
+    for (auto& s : stages_) s->latency_ns = PNP_HAS_SLOT(s->ops, pnp_node_ops_t, latency_ns)
+                                                ? std::max<int64_t>(0, s->ops->latency_ns(s->self))
+                                                : 0;
+}
+
+int64_t Scheduler::latency_ns() const {
+    int64_t sum = 0;
+    for (const auto& s : stages_) sum += s->latency_ns;
+    return sum;
+}
+
+void Scheduler::warn(const std::string& message) {
+    ++warning_count_;
+    if (warnings_.size() < kMaxWarningsKept) warnings_.push_back(message);
+}
+
+pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
+    if (!r) {
+        s.sink_problem = "emitted a NULL record";
+        return PN_E_INVALID_ARGUMENT;
+    }
+    const uint32_t min_size = min_record_size(r->type);
+    if (min_size == 0 || !(s.descriptor->produces & PN_REC_MASK(r->type))) {
+        s.sink_problem = "emitted a record of type " + std::to_string(r->type) + " (" +
+                         record_type_name(r->type) + ") that its descriptor does not declare in produces";
+        warn(s.instance_name + " misbehaving: " + s.sink_problem);
+        return PN_E_INVALID_ARGUMENT;
+    }
+    if (r->struct_size < min_size || r->struct_size > PN_RECORD_MAX_SIZE) {
+        s.sink_problem = std::string("emitted a ") + record_type_name(r->type) + " record with struct_size " +
+                         std::to_string(r->struct_size);
+        warn(s.instance_name + " misbehaving: " + s.sink_problem);
+        return PN_E_INVALID_ARGUMENT;
+    }
+    const std::string bad = check_record_values(r);
+    if (!bad.empty()) {
+        s.sink_problem = std::string("emitted a ") + record_type_name(r->type) + " record at " + seconds(r->t_ns) +
+                         " whose " + bad;
+        warn(s.instance_name + " misbehaving: " + s.sink_problem);
+        return PN_E_NUMERIC;
+    }
+    const uint64_t bit = PN_REC_MASK(r->type);
+    const int q = s.index + 1;
+    if (queue_wanted_[q] & bit) {
+        if (r->t_ns < s.last_stored_t_ns) {
+            s.sink_problem = std::string("emitted a ") + record_type_name(r->type) + " record at " +
+                             seconds(r->t_ns) + ", before its previous output at " + seconds(s.last_stored_t_ns);
+            warn(s.instance_name + " misbehaving: " + s.sink_problem);
+            return PN_E_OUT_OF_ORDER;
+        }
+        s.last_stored_t_ns = r->t_ns;
+        queues_[q].push(r);
+        auto* stored = const_cast<pn_record_header_t*>(queues_[q].at(queues_[q].end() - 1));
+        stored->source_id = static_cast<uint32_t>(q);
+    }
+    if (final_producer_mask_[s.index] & output_mask_ & bit) {
+        pn_output_t out;
+        std::memcpy(&out, r, r->struct_size);
+        out.header.source_id = static_cast<uint32_t>(q);
+        outputs_.push(&out.header);
+    }
+    ++s.records_out;
+    return PN_OK;
+}
+
+void Scheduler::push(const pn_record_header_t* r) {
+    for (auto& s : stages_) s->flushed = false;
+    ++records_in_;
+    if (queue_wanted_[0] & PN_REC_MASK(r->type)) queues_[0].push(r);
+    // Release app records strictly before the newest time (see header).
+    if (r->t_ns > last_app_t_ns_) {
+        app_limit_ns_ = r->t_ns - 1;
+        last_app_t_ns_ = r->t_ns;
+    }
+    drain();
+}
+
+void Scheduler::flush() {
+    app_limit_ns_ = kInf;
+    drain();
+    for (auto& s : stages_) {
+        if (PNP_HAS_SLOT(s->ops, pnp_node_ops_t, flush)) {
+            pn_error_t err{};
+            err.struct_size = sizeof err;
+            const pn_status_t st = s->ops->flush(s->self, &s->sink, &err);
+            if (PN_FAILED(st)) report_failure(*s, st, err, "flush");
+        }
+        s->flushed = true;
+        drain();
+    }
+    app_limit_ns_ = last_app_t_ns_;  // later pushes must come after the flushed data
+}
+
+pn_status_t Scheduler::reset(pn_error_t* err) {
+    for (auto& s : stages_) {
+        const pn_status_t st = s->ops->reset(s->self, err);
+        if (PN_FAILED(st)) return st;
+        s->flushed = false;
+        s->last_stored_t_ns = INT64_MIN;
+        for (auto& in : s->forward) in.cursor = 0;
+        for (auto& in : s->feedback) in.cursor = 0;
+    }
+    for (auto& q : queues_) q = RecordQueue(q.capacity());
+    for (auto& s : stages_)
+        if (PNP_HAS_SLOT(s->ops, pnp_node_ops_t, latency_ns))
+            s->latency_ns = std::max<int64_t>(0, s->ops->latency_ns(s->self));
+    outputs_.clear();
+    app_limit_ns_ = INT64_MIN;
+    last_app_t_ns_ = INT64_MIN;
+    failure_ = StageFailure{};
+    return PN_OK;
+}
+
+StageFailure Scheduler::take_failure() {
+    StageFailure f = failure_;
+    failure_ = StageFailure{};
+    return f;
+}
+
+int64_t Scheduler::peek(Stage& s, int64_t limit) {
+    int64_t best = kInf;
+    for (auto& in : s.forward) {
+        const RecordQueue& q = queues_[in.queue];
+        while (in.cursor < q.end() && !(in.mask & PN_REC_MASK(q.at(in.cursor)->type))) ++in.cursor;
+        if (in.cursor < q.end()) best = std::min(best, q.at(in.cursor)->t_ns);
+    }
+    return best <= limit ? best : kInf;
+}
+
+bool Scheduler::deliver_feedback(Stage& s) {
+    for (auto& in : s.feedback) {
+        const RecordQueue& q = queues_[in.queue];
+        const pn_record_header_t* batch[kMaxBatch];
+        uint32_t count = 0;
+        while (in.cursor < q.end() && count < kMaxBatch) {
+            const pn_record_header_t* r = q.at(in.cursor++);
+            if (in.mask & PN_REC_MASK(r->type)) batch[count++] = r;
+        }
+        if (count) {
+            call_process(s, batch, count);
+            return true;
+        }
+    }
+    return false;
+}
+
+void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
+    // Every record at t_ns, app inputs first, then earlier stages in order.
+    const pn_record_header_t* batch[kMaxBatch];
+    uint32_t count = 0;
+    for (auto& in : s.forward) {
+        const RecordQueue& q = queues_[in.queue];
+        while (in.cursor < q.end() && count < kMaxBatch) {
+            const pn_record_header_t* r = q.at(in.cursor);
+            if (!(in.mask & PN_REC_MASK(r->type))) {
+                ++in.cursor;
+                continue;
+            }
+            if (r->t_ns != t_ns) break;
+            batch[count++] = r;
+            ++in.cursor;
+        }
+    }
+    call_process(s, batch, count);
+}
+
+void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count) {
+    s.records_in += count;
+    pn_error_t err;
+    err.struct_size = sizeof err;
+    err.code = PN_OK;
+    err.where[0] = err.message[0] = '\0';
+    const pn_status_t st = s.ops->process(s.self, records, count, &s.sink, &err);
+    if (PN_FAILED(st)) report_failure(s, st, err, "process");
+}
+
+void Scheduler::report_failure(Stage& s, pn_status_t status, const pn_error_t& err, const char* during) {
+    ++s.failures;
+    std::string msg = s.instance_name + " (" + s.plugin_id + ") failed in " + during + ": ";
+    msg += err.message[0] ? err.message : "no message";
+    if (!s.sink_problem.empty()) msg += "; the engine refused its output: " + s.sink_problem;
+    s.sink_problem.clear();
+    if (status == PN_E_NUMERIC || status == PN_E_INTERNAL) {
+        pn_error_t reset_err{};
+        reset_err.struct_size = sizeof reset_err;
+        if (!PN_FAILED(s.ops->reset(s.self, &reset_err))) {
+            ++s.resets;
+            msg += " (the instance was reset)";
+        }
+    }
+    warn(msg);
+    if (failure_.status == PN_OK) failure_ = StageFailure{status, s.instance_name, msg};
+}
+
+void Scheduler::drain() {
+    const size_t n = stages_.size();
+    int64_t next_t[8];
+    for (;;) {
+        // Compute each stage's read limit from the look-ahead of those above.
+        int64_t limit = app_limit_ns_;
+        for (size_t k = 0; k < n; ++k) {
+            Stage& s = *stages_[k];
+            next_t[k] = peek(s, limit);
+            const int64_t done = next_t[k] == kInf ? limit : next_t[k] - 1;
+            limit = s.flushed ? done : saturating_sub(done, s.latency_ns);
+        }
+        // Deepest stage with work first: lock-step through the pipeline.
+        bool progressed = false;
+        for (size_t k = n; k-- > 0 && !progressed;) {
+            Stage& s = *stages_[k];
+            if (!s.feedback.empty() && deliver_feedback(s)) {
+                progressed = true;
+            } else if (next_t[k] != kInf) {
+                deliver_forward(s, next_t[k]);
+                progressed = true;
+            }
+        }
+        if (!progressed) break;
+    }
+    release_consumed();
+}
+
+void Scheduler::release_consumed() {
+    for (size_t q = 0; q < queues_.size(); ++q) {
+        RecordQueue::Seq min_cursor = queues_[q].end();
+        for (auto& s : stages_) {
+            for (const auto& in : s->forward)
+                if (in.queue == static_cast<int>(q)) min_cursor = std::min(min_cursor, in.cursor);
+            for (const auto& in : s->feedback)
+                if (in.queue == static_cast<int>(q)) min_cursor = std::min(min_cursor, in.cursor);
+        }
+        queues_[q].release_until(min_cursor);
+    }
+}
+
+}  // namespace pednav::engine

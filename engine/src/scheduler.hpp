@@ -1,0 +1,133 @@
+// Streams records through the stages of one pipeline, sample by sample, in
+// timestamp order. See docs/scheduler.md for the rules; in short:
+//
+//   - Queue 0 holds the app's inputs, queue k+1 the outputs of stage k. Stage k
+//     reads, merged by time, queue 0 and the queues of earlier stages,
+//     restricted to the record types it consumes (forward edges), and the
+//     queues of later stages for the types it consumes from them (feedback
+//     edges, delivered before its next forward record).
+//   - Look-ahead: a stage declaring latency L has emitted every output about
+//     time t once it has consumed its inputs up to t + L. Stage k+1 may only
+//     read records up to limit(k+1) = done(k) - L(k), so downstream stages see
+//     a sample and the decisions about it together. Output latency = sum of L.
+//   - Lock-step: the deepest stage with work goes first, so a stage consumes
+//     sample n before any zero-latency stage upstream of it sees sample n+1;
+//     feedback emitted at sample n therefore applies from sample n+1.
+//   - App inputs at the newest pushed time are held back until a later time is
+//     pushed (or flush), so equal-time records are ordered the same however
+//     the app batches its pushes: the output is bit-identical for the same input.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pednav/pn_plugin.h>
+
+#include "config.hpp"
+#include "output_queue.hpp"
+#include "record_queue.hpp"
+
+namespace pednav::engine {
+
+class Scheduler;
+
+// One plugin instance in the pipeline.
+struct Stage {
+    Role role;
+    std::string instance_name;  // "foot/step_detector"
+    std::string plugin_id;
+    const pnp_descriptor_t* descriptor = nullptr;
+    const pnp_node_ops_t* ops = nullptr;
+    void* self = nullptr;
+    int64_t latency_ns = 0;
+
+    // Wiring, filled by Scheduler::wire().
+    struct Input {
+        int queue;
+        uint64_t mask;
+        RecordQueue::Seq cursor;
+    };
+    std::vector<Input> forward;
+    std::vector<Input> feedback;
+
+    // State of the current segment.
+    bool flushed = false;
+    int64_t last_stored_t_ns = INT64_MIN;
+    std::string sink_problem;  // why the sink last refused a record
+
+    // Counters.
+    uint64_t records_in = 0, records_out = 0, failures = 0, resets = 0;
+
+    // What the plugin gets; host_data and sink_data point back here.
+    pnp_host_t host{};
+    pnp_sink_t sink{};
+    Scheduler* scheduler = nullptr;
+    void* owner = nullptr;  // the Engine, for host->log
+    int index = 0;
+};
+
+struct StageFailure {
+    pn_status_t status = PN_OK;
+    std::string where;    // instance name
+    std::string message;
+};
+
+class Scheduler {
+public:
+    // Takes the created stages in role order; `output_mask` selects the types
+    // copied to the output queue (from the last stage producing each type).
+    Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity);
+    ~Scheduler();  // destroys the instances
+
+    // Appends one validated app record and processes whatever became ready.
+    void push(const pn_record_header_t* record);
+    // Drains every stage's look-ahead (end of stream).
+    void flush();
+    // Resets every plugin and empties the queues.
+    pn_status_t reset(pn_error_t* err);
+
+    // The first stage failure since the last call, and clears it.
+    StageFailure take_failure();
+
+    void set_output_mask(uint64_t mask) { output_mask_ = mask; }
+    uint64_t output_mask() const { return output_mask_; }
+    OutputQueue& outputs() { return outputs_; }
+    const OutputQueue& outputs() const { return outputs_; }
+    int64_t latency_ns() const;
+    const std::vector<std::unique_ptr<Stage>>& stages() const { return stages_; }
+    uint64_t records_in() const { return records_in_; }
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    uint64_t warning_count() const { return warning_count_; }
+    void warn(const std::string& message);
+
+    // Called by the sink trampoline.
+    pn_status_t accept(Stage& stage, const pn_record_header_t* record);
+
+private:
+    void wire();
+    void drain();
+    // Next forward record time for stage k within `limit`, INT64_MAX if none.
+    int64_t peek(Stage& s, int64_t limit);
+    bool deliver_feedback(Stage& s);
+    void deliver_forward(Stage& s, int64_t t_ns);
+    void call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count);
+    void report_failure(Stage& s, pn_status_t status, const pn_error_t& err, const char* during);
+    void release_consumed();
+
+    std::vector<std::unique_ptr<Stage>> stages_;
+    std::vector<RecordQueue> queues_;      // 0 = app, k+1 = stage k
+    std::vector<uint64_t> queue_wanted_;   // union of reader masks per queue
+    uint64_t final_producer_mask_[8] = {}; // per stage: types it is the last producer of
+    OutputQueue outputs_;
+    uint64_t output_mask_;
+    int64_t app_limit_ns_ = INT64_MIN;     // app records up to here are released
+    int64_t last_app_t_ns_ = INT64_MIN;
+    uint64_t records_in_ = 0;
+    StageFailure failure_;
+    std::vector<std::string> warnings_;
+    uint64_t warning_count_ = 0;
+};
+
+}  // namespace pednav::engine
