@@ -1,0 +1,44 @@
+// Small helpers shared by the pednav subcommands: argument parsing, where the
+// first-party plugins and presets are, reading text files.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pednav::cli {
+
+// A command-line mistake; main prints it with the usage and exits 2.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Walks "--name value" / "--flag" arguments.
+class Args {
+public:
+    explicit Args(std::vector<std::string> args) : args_(std::move(args)) {}
+    bool done() const { return i_ >= args_.size(); }
+    const std::string& peek() const { return args_[i_]; }
+    std::string next() { return args_[i_++]; }
+    // The value after the option just taken.
+    std::string value(const std::string& option) {
+        if (done()) throw UsageError(option + " needs a value");
+        return next();
+    }
+
+private:
+    std::vector<std::string> args_;
+    size_t i_ = 0;
+};
+
+std::string executable_dir();
+// The first-party plugin directory next to the executable (build tree and
+// installed layout alike).
+std::string default_plugin_dir();
+// Folder of the mount presets (configs/<mount>.json) next to the executable.
+std::string default_config_dir();
+std::string read_text_file(const std::string& path);  // throws std::runtime_error naming the file
+std::vector<double> parse_numbers(const std::string& text, size_t count, const std::string& option);
+
+}  // namespace pednav::cli

@@ -1,0 +1,43 @@
+#include "cmd_plugins.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "describe.hpp"
+#include "loader.hpp"
+
+int pednav_cmd_plugins(const std::vector<std::string>& argv) {
+    using namespace pednav;
+    cli::Args args(argv);
+    bool json = false;
+    std::vector<std::string> dirs = {cli::default_plugin_dir()};
+    while (!args.done()) {
+        const std::string a = args.next();
+        if (a == "--json") json = true;
+        else if (a == "--plugin-dir") dirs.push_back(args.value(a));
+        else throw cli::UsageError("unknown option " + a + " for plugins");
+    }
+    engine::Loader loader;
+    for (const auto& d : dirs) loader.scan_directory(d);
+    const nlohmann::json j = engine::describe_loader(loader);
+    if (json) {
+        std::cout << j.dump(2) << "\n";
+        return 0;
+    }
+    std::printf("%-44s %-19s %-8s %s\n", "plugin", "kind", "version", "mounts");
+    for (const auto& p : j["plugins"]) {
+        std::string mounts;
+        for (const auto& f : p["features"]) {
+            const std::string s = f.get<std::string>();
+            if (s.rfind("mount:", 0) == 0) mounts += (mounts.empty() ? "" : ",") + s.substr(6);
+        }
+        std::printf("%-44s %-19s %-8s %s\n", p["id"].get<std::string>().c_str(), p["kind"].get<std::string>().c_str(),
+                    p["version"].get<std::string>().c_str(), mounts.empty() ? "any" : mounts.c_str());
+    }
+    for (const auto& l : j["libraries"]) std::printf("library %s (%s)\n", l["path"].get<std::string>().c_str(), l["id"].get<std::string>().c_str());
+    for (const auto& r : j["rejected"])
+        std::printf("rejected %s: %s (%s)\n", r["path"].get<std::string>().c_str(), r["reason"].get<std::string>().c_str(),
+                    r["status"].get<std::string>().c_str());
+    return 0;
+}

@@ -1,0 +1,5 @@
+#pragma once
+#include <string>
+#include <vector>
+// pednav plugins [--json] [--plugin-dir DIR]...: what was loaded and rejected.
+int pednav_cmd_plugins(const std::vector<std::string>& args);

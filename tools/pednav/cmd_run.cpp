@@ -1,0 +1,90 @@
+#include "cmd_run.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include <pednav_io/sensor_log.hpp>
+#include <pednav_io/writers.hpp>
+
+#include "cli_common.hpp"
+#include "run_pipeline.hpp"
+#ifdef PEDNAV_HAVE_PLOT
+#include "run_plot.hpp"
+#endif
+
+int pednav_cmd_run(const std::vector<std::string>& argv) {
+    using namespace pednav;
+    cli::Args args(argv);
+    std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, summary, plot;
+    ReplayOptions options;
+    options.plugin_dirs = {cli::default_plugin_dir()};
+    while (!args.done()) {
+        const std::string a = args.next();
+        if (a == "--mount") mount = args.value(a);
+        else if (a == "--config") config_path = args.value(a);
+        else if (a == "--input") input = args.value(a);
+        else if (a == "--format") format = args.value(a);
+        else if (a == "--output") output = args.value(a);
+        else if (a == "--steps") steps = args.value(a);
+        else if (a == "--geojson") geojson = args.value(a);
+        else if (a == "--gpx") gpx = args.value(a);
+        else if (a == "--summary") summary = args.value(a);
+        else if (a == "--plot") plot = args.value(a);
+        else if (a == "--plugin-dir") options.plugin_dirs.push_back(args.value(a));
+        else if (a == "--start") {
+            const auto v = cli::parse_numbers(args.value(a), 3, a);
+            for (int i = 0; i < 3; ++i) options.start_enu_m[i] = v[i];
+        } else if (a == "--heading") {
+            options.heading_deg = cli::parse_numbers(args.value(a), 1, a)[0];
+        } else {
+            throw cli::UsageError("unknown option " + a + " for run");
+        }
+    }
+    if (input.empty()) throw cli::UsageError("run needs --input FILE");
+    if (mount.empty() && config_path.empty()) throw cli::UsageError("run needs --mount foot|chest|waist or --config FILE");
+    if (!mount.empty() && mount != "foot" && mount != "chest" && mount != "waist")
+        throw cli::UsageError("--mount must be foot, chest or waist, not " + mount);
+
+    options.config_json = cli::load_config(config_path, mount.empty() ? "foot" : mount);
+    options.mount = mount;
+
+    io::ReadOptions ro;
+    ro.format = format;
+    const io::SensorLog log = io::read_sensor_file(input, ro);
+    for (const auto& n : log.notes) std::fprintf(stderr, "input: %s\n", n.c_str());
+    size_t shown = 0;
+    for (const auto& i : log.issues)
+        if (shown++ < 20) std::fprintf(stderr, "input: line %zu: %s\n", i.line, i.message.c_str());
+    if (log.issues.size() > 20) std::fprintf(stderr, "input: ... %zu issues in all\n", log.issues.size());
+
+    const ReplayResult r = cli::run_with_progress(options, io::merged_records(log));
+    for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (!r.error.empty()) {
+        std::fprintf(stderr, "pednav run: %s\n", r.error.c_str());
+        return 1;
+    }
+    if (!output.empty()) io::write_track_csv(output, r.positions);
+    if (!steps.empty()) io::write_steps_csv(steps, r.strides);
+    io::Origin origin;
+    if (!geojson.empty()) io::write_geojson(geojson, r.positions, r.strides, origin);
+    if (!gpx.empty()) io::write_gpx(gpx, r.positions, origin);
+    if (!summary.empty()) {
+        std::ofstream out(summary);
+        out << io::run_summary_json(log, r.describe_json, r.positions, r.strides, r.warnings).dump(2) << "\n";
+        if (!out) throw std::runtime_error("cannot write " + summary);
+    }
+#ifdef PEDNAV_HAVE_PLOT
+    if (!plot.empty()) cli::write_run_plot(plot, input, r);
+#else
+    if (!plot.empty()) throw cli::UsageError("this build has no plot support");
+#endif
+    const pn_position_t* last = r.positions.empty() ? nullptr : &r.positions.back();
+    std::printf("samples %zu, positions %zu, steps %zu, distance %.2f m, latency %.3f s\n", log.imu.size(),
+                r.positions.size(), r.strides.size() ? r.strides.size() : r.steps.size(),
+                cli::track_length_m(r.positions), static_cast<double>(r.latency_ns) * 1e-9);
+    if (last)
+        std::printf("final position x %.3f m, y %.3f m, z %.3f m, heading %.1f deg\n", last->pos_enu_m[0],
+                    last->pos_enu_m[1], last->pos_enu_m[2], last->heading_rad * 180.0 / M_PI);
+    return r.warnings.empty() ? 0 : 0;
+}

@@ -1,0 +1,7 @@
+#pragma once
+#include <string>
+#include <vector>
+// pednav run --mount foot|chest|waist [--config FILE] --input FILE [--format NAME]
+//   [--output track.csv] [--steps FILE] [--start x,y,z] [--heading DEG]
+//   [--geojson FILE] [--gpx FILE] [--summary FILE] [--plot FILE.svg] [--plugin-dir DIR]...
+int pednav_cmd_run(const std::vector<std::string>& args);
