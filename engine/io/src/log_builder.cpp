@@ -1,0 +1,308 @@
+#include "log_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace pednav::io::detail {
+
+namespace {
+
+template <typename T>
+void init_header(T& record, pn_record_type_t type, int64_t t_ns) {
+    record.header.struct_size = sizeof(T);
+    record.header.type = type;
+    record.header.t_ns = t_ns;
+    record.header.source_id = 0;
+    record.header.flags = 0;
+}
+
+std::string fmt(const char* format, double a, double b = 0.0, double c = 0.0) {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer, format, a, b, c);
+    return buffer;
+}
+
+double median_of(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+double quantile_of(std::vector<double> v, double q) {
+    if (v.empty()) return 0.0;
+    auto k = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
+    std::nth_element(v.begin(), k, v.end());
+    return *k;
+}
+
+}  // namespace
+
+const char* stream_name(StreamId s) {
+    switch (s) {
+        case kAccel: return "accel";
+        case kGyro: return "gyro";
+        case kMag: return "mag";
+        case kPressure: return "pressure";
+        case kGnss: return "gnss";
+        case kTruth: return "truth";
+        default: return "?";
+    }
+}
+
+int64_t seconds_to_ns(double t_s) { return static_cast<int64_t>(std::llround(t_s * 1e9)); }
+
+LogBuilder::LogBuilder(SensorLog& log, const ReadOptions& options) : log_(log), options_(options) {}
+
+void LogBuilder::note(const std::string& text) { log_.notes.push_back(text); }
+
+void LogBuilder::issue(size_t line, const std::string& message) {
+    if (log_.issues.size() < options_.max_issues) {
+        log_.issues.push_back({line, message});
+    } else {
+        ++log_.issues_not_listed;
+    }
+}
+
+void LogBuilder::bad_row(size_t line, const std::string& message, unsigned streams) {
+    for (int s = 0; s < kStreamCount; ++s) {
+        if (streams & (1u << s)) ++bad_[s];
+    }
+    issue(line, "row skipped: " + message);
+}
+
+bool LogBuilder::accept_time(Clock& clock, size_t line, double t_s, unsigned streams) {
+    const int64_t t_ns = seconds_to_ns(t_s);
+    if (clock.has_last) {
+        if (t_ns < clock.last_t_ns) {
+            bad_row(line,
+                    fmt("time goes backwards (%.9g s after %.9g s)", t_s, static_cast<double>(clock.last_t_ns) * 1e-9) +
+                        (clock.name.empty() ? std::string() : " in " + clock.name),
+                    streams);
+            return false;
+        }
+        if (t_ns == clock.last_t_ns) {
+            auto& d = duplicates_[clock.name];
+            if (d.count == 0) d.first_line = line;
+            ++d.count;
+            return false;
+        }
+    }
+    clock.has_last = true;
+    clock.last_t_ns = t_ns;
+    return true;
+}
+
+void LogBuilder::add_imu(size_t line, double t_s, const double a[3], const double g[3]) {
+    pn_imu_t r{};
+    init_header(r, PN_REC_IMU, seconds_to_ns(t_s));
+    for (int i = 0; i < 3; ++i) {
+        r.accel_mps2[i] = a[i];
+        r.gyro_radps[i] = g[i];
+    }
+    log_.imu.push_back(r);
+    for (StreamId s : {kAccel, kGyro}) {
+        times_[s].push_back(t_s);
+        lines_[s].push_back(line);
+    }
+}
+
+void LogBuilder::add_accel(size_t line, double t_s, const double a[3]) {
+    separate_imu_ = true;
+    accel_raw_.push_back({seconds_to_ns(t_s), {a[0], a[1], a[2]}});
+    times_[kAccel].push_back(t_s);
+    lines_[kAccel].push_back(line);
+}
+
+void LogBuilder::add_gyro(size_t line, double t_s, const double g[3]) {
+    separate_imu_ = true;
+    gyro_raw_.push_back({seconds_to_ns(t_s), {g[0], g[1], g[2]}});
+    times_[kGyro].push_back(t_s);
+    lines_[kGyro].push_back(line);
+}
+
+void LogBuilder::add_mag(size_t line, double t_s, const double m[3]) {
+    pn_mag_t r{};
+    init_header(r, PN_REC_MAG, seconds_to_ns(t_s));
+    for (int i = 0; i < 3; ++i) r.mag_ut[i] = m[i];
+    log_.mag.push_back(r);
+    times_[kMag].push_back(t_s);
+    lines_[kMag].push_back(line);
+}
+
+void LogBuilder::add_baro(size_t line, double t_s, double p_pa, double temp_c) {
+    pn_baro_t r{};
+    init_header(r, PN_REC_BARO, seconds_to_ns(t_s));
+    r.pressure_pa = p_pa;
+    r.temperature_c = temp_c;
+    log_.baro.push_back(r);
+    times_[kPressure].push_back(t_s);
+    lines_[kPressure].push_back(line);
+}
+
+void LogBuilder::add_gnss(size_t line, double t_s, pn_gnss_t fix) {
+    init_header(fix, PN_REC_GNSS, seconds_to_ns(t_s));
+    log_.gnss.push_back(fix);
+    times_[kGnss].push_back(t_s);
+    lines_[kGnss].push_back(line);
+}
+
+void LogBuilder::add_truth(size_t line, const TruthPoint& point) {
+    log_.truth.push_back(point);
+    times_[kTruth].push_back(point.t_s);
+    lines_[kTruth].push_back(line);
+}
+
+void LogBuilder::set_units(StreamId stream, const std::string& found, const std::string& converted) {
+    units_found_[stream] = found;
+    units_converted_[stream] = converted;
+}
+
+void LogBuilder::pair_accel_gyro() {
+    if (!separate_imu_) return;
+    size_t outside = 0;
+    size_t j = 0;
+    for (const auto& a : accel_raw_) {
+        if (gyro_raw_.empty() || a.t_ns < gyro_raw_.front().t_ns || a.t_ns > gyro_raw_.back().t_ns) {
+            ++outside;
+            continue;
+        }
+        while (j + 1 < gyro_raw_.size() && gyro_raw_[j + 1].t_ns <= a.t_ns) ++j;
+        const Raw3& g0 = gyro_raw_[j];
+        const Raw3& g1 = (j + 1 < gyro_raw_.size()) ? gyro_raw_[j + 1] : g0;
+        double w = 0.0;
+        if (g1.t_ns > g0.t_ns) w = static_cast<double>(a.t_ns - g0.t_ns) / static_cast<double>(g1.t_ns - g0.t_ns);
+        pn_imu_t r{};
+        init_header(r, PN_REC_IMU, a.t_ns);
+        for (int i = 0; i < 3; ++i) {
+            r.accel_mps2[i] = a.v[i];
+            r.gyro_radps[i] = g0.v[i] + w * (g1.v[i] - g0.v[i]);
+        }
+        log_.imu.push_back(r);
+    }
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "accelerometer and gyroscope paired on the accelerometer times (gyroscope interpolated "
+                  "linearly): %zu IMU records; %zu accelerometer samples outside the gyroscope's time span dropped",
+                  log_.imu.size(), outside);
+    note(text);
+}
+
+void LogBuilder::report_gaps(StreamId stream, const char* label) {
+    const auto& t = times_[stream];
+    for (size_t i = 1; i < t.size(); ++i) {
+        const double dt = t[i] - t[i - 1];
+        if (dt > options_.gap_s) {
+            issue(lines_[stream][i], fmt("gap of %.3f s in ", dt) + label + fmt(" (from t=%.3f s to t=%.3f s)", t[i - 1], t[i]));
+        }
+    }
+}
+
+void LogBuilder::check_units() {
+    if (!log_.imu.empty()) {
+        std::vector<double> a_norm, w_norm;
+        a_norm.reserve(log_.imu.size());
+        w_norm.reserve(log_.imu.size());
+        for (const auto& r : log_.imu) {
+            a_norm.push_back(std::hypot(r.accel_mps2[0], r.accel_mps2[1], r.accel_mps2[2]));
+            w_norm.push_back(std::hypot(r.gyro_radps[0], r.gyro_radps[1], r.gyro_radps[2]));
+        }
+        const double a_med = median_of(a_norm);
+        if (a_med > 0.5 && a_med < 1.5) {
+            issue(0, fmt("unit check: accelerometer magnitude median %.3f: gravity reads ~1, the values look like g, "
+                         "not m/s^2; not converted (the format does not say g: use a column map with unit \"g\")",
+                         a_med));
+        } else if (a_med > 30.0) {
+            issue(0, fmt("unit check: accelerometer magnitude median %.3f m/s^2 is far above gravity: wrong unit?", a_med));
+        } else if (a_med < 0.5) {
+            issue(0, fmt("unit check: accelerometer magnitude median %.3f m/s^2: no gravity in the signal "
+                         "(linear acceleration?) or wrong unit",
+                         a_med));
+        }
+        const double w_p99 = quantile_of(w_norm, 0.99);
+        if (w_p99 > 25.0) {
+            issue(0, fmt("unit check: gyroscope 99th percentile %.1f rad/s is implausible for a walk: the values look "
+                         "like deg/s; not converted (use a column map with unit \"deg/s\")",
+                         w_p99));
+        }
+    }
+    if (!log_.mag.empty()) {
+        std::vector<double> m;
+        for (const auto& r : log_.mag) m.push_back(std::hypot(r.mag_ut[0], r.mag_ut[1], r.mag_ut[2]));
+        const double m_med = median_of(m);
+        if (m_med < 5.0) {
+            issue(0, fmt("unit check: magnetometer magnitude median %.3f uT is far below the Earth's field (25-65 uT): "
+                         "gauss or normalised units?",
+                         m_med));
+        } else if (m_med > 200.0) {
+            issue(0, fmt("unit check: magnetometer magnitude median %.1f uT is far above the Earth's field: nT or mG?",
+                         m_med));
+        }
+    }
+    if (!log_.baro.empty()) {
+        std::vector<double> p;
+        for (const auto& r : log_.baro) p.push_back(r.pressure_pa);
+        const double p_med = median_of(p);
+        if (p_med < 30000.0 || p_med > 110000.0) {
+            issue(0, fmt("unit check: pressure median %.3f Pa is not an atmospheric pressure in Pa: hPa or kPa?", p_med));
+        }
+    }
+}
+
+void LogBuilder::finish() {
+    pair_accel_gyro();
+    if (log_.imu.empty()) {
+        throw ReadError(log_.path, 0, "no accelerometer and gyroscope sample could be read");
+    }
+    for (const auto& [name, d] : duplicates_) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%zu samples with a repeated timestamp dropped%s%s (first at line %zu)",
+                      d.count, name.empty() ? "" : " in ", name.c_str(), d.first_line);
+        issue(d.first_line, text);
+        note(text);
+    }
+    if (separate_imu_) {
+        report_gaps(kAccel, "accel");
+        report_gaps(kGyro, "gyro");
+    } else {
+        report_gaps(kAccel, "accel/gyro");
+    }
+    report_gaps(kMag, "mag");
+    report_gaps(kPressure, "pressure");
+    report_gaps(kGnss, "gnss");
+    check_units();
+
+    log_.streams.clear();
+    for (int s = 0; s < kStreamCount; ++s) {
+        const auto id = static_cast<StreamId>(s);
+        const auto& t = times_[s];
+        if (t.empty() && units_found_[s].empty() && bad_[s] == 0) continue;
+        StreamInfo info;
+        info.name = stream_name(id);
+        info.count = t.size();
+        info.units_found = units_found_[s];
+        info.units_converted = units_converted_[s];
+        info.bad_rows = bad_[s];
+        if (t.size() >= 2) {
+            info.duration_s = t.back() - t.front();
+            if (info.duration_s > 0) info.rate_hz = static_cast<double>(t.size() - 1) / info.duration_s;
+            std::vector<double> dt(t.size() - 1);
+            for (size_t i = 1; i < t.size(); ++i) dt[i - 1] = t[i] - t[i - 1];
+            const double dt_median = median_of(std::move(dt));
+            if (dt_median > 0) info.median_rate_hz = 1.0 / dt_median;
+            // Truth points are sparse by nature: no gap count for them.
+            if (id != kTruth) {
+                for (size_t i = 1; i < t.size(); ++i) {
+                    if (t[i] - t[i - 1] > options_.gap_s) ++info.gaps;
+                }
+            }
+        }
+        log_.streams.push_back(info);
+    }
+    if (log_.issues_not_listed > 0) {
+        log_.issues.push_back({0, std::to_string(log_.issues_not_listed) + " more issues not listed"});
+    }
+}
+
+}  // namespace pednav::io::detail

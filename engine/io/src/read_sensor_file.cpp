@@ -1,0 +1,170 @@
+// Format detection and dispatch, merged_records, and the small public helpers.
+#include <algorithm>
+#include <dirent.h>
+#include <sys/stat.h>
+
+#include "formats.hpp"
+#include "pednav_io/sensor_log.hpp"
+
+namespace pednav::io {
+
+namespace {
+
+std::string make_message(const std::string& path, size_t line, const std::string& reason) {
+    std::string text = path;
+    if (line > 0) text += ":" + std::to_string(line);
+    return text + ": " + reason;
+}
+
+bool is_directory(const std::string& path) {
+    struct stat st {};
+    return stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+// A folder holding a two-file recording: the path of its accelerometer file.
+std::string resolve_folder(const std::string& path) {
+    DIR* dir = opendir(path.c_str());
+    if (dir == nullptr) throw ReadError(path, 0, "cannot open the folder");
+    std::vector<std::string> candidates;
+    while (dirent* entry = readdir(dir)) {
+        const std::string name = entry->d_name;
+        if (detail::starts_with(name, "accelerometer") && detail::ends_with(name, ".txt")) candidates.push_back(name);
+    }
+    closedir(dir);
+    std::sort(candidates.begin(), candidates.end());
+    if (candidates.empty()) {
+        throw ReadError(path, 0, "is a folder without a recording (expected accelerometer*.txt and gyroscope*.txt)");
+    }
+    // Prefer the calibrated file when both raw and calibrated exist.
+    for (const auto& c : candidates) {
+        if (c.find("calibrated") != std::string::npos && c.find("uncalibrated") == std::string::npos) {
+            return path + "/" + c;
+        }
+    }
+    return path + "/" + candidates.front();
+}
+
+const detail::FormatReader* find_reader(const std::string& name) {
+    for (const auto& r : detail::format_readers()) {
+        if (name == r.name) return &r;
+    }
+    return nullptr;
+}
+
+const detail::FormatReader* detect(const detail::TextFile& file) {
+    for (const auto& r : detail::format_readers()) {
+        if (r.detect != nullptr && r.detect(file)) return &r;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+ReadError::ReadError(const std::string& path, size_t line, const std::string& reason)
+    : std::runtime_error(make_message(path, line, reason)), path_(path), line_(line), reason_(reason) {}
+
+const StreamInfo* SensorLog::stream(const std::string& name) const {
+    for (const auto& s : streams) {
+        if (s.name == name) return &s;
+    }
+    return nullptr;
+}
+
+namespace detail {
+
+size_t first_content_line(const TextFile& file) {
+    for (size_t i = 0; i < file.lines.size(); ++i) {
+        const std::string_view line = trim(file.lines[i]);
+        if (line.empty() || line[0] == '#' || line[0] == '%' || starts_with(line, "//")) continue;
+        return i;
+    }
+    return file.lines.size();
+}
+
+const std::vector<FormatReader>& format_readers() {
+    // Detection order: the most specific header first.
+    static const std::vector<FormatReader> readers = {
+                        {"microstrain-sensorconnect-a", "MicroStrain SensorConnect CSV, scaled* channels (g, rad/s, gauss)",
+         detect_microstrain_a, read_microstrain},
+        {"microstrain-sensorconnect-b", "MicroStrain SensorConnect CSV, estCompensated* channels (m/s^2, rad/s)",
+         detect_microstrain_b, read_microstrain},
+        {"xio-ngimu-csv", "x-io NGIMU / x-IMU CSV (\"Time (s)\", deg/s, g)", detect_xio_csv, read_xio_csv},
+        {"xsens-mtw-tsv", "Xsens tab-separated export (PacketCounter, Acc_X, ...)", detect_xsens_mtw_tsv, read_xsens},
+        {"xsens-mtmanager-csv", "Xsens MT Manager CSV export (PacketCounter, SampleTimeFine, Acc_X, ...)",
+         detect_xsens_mtmanager_csv, read_xsens},
+                {"pednav-csv", "canonical CSV t,ax,ay,az,gx,gy,gz[,mx,my,mz][,p] in s, m/s^2, rad/s, uT, Pa",
+         detect_pednav_csv, read_pednav_csv},
+            };
+    return readers;
+}
+
+}  // namespace detail
+
+std::vector<std::string> supported_formats() {
+    std::vector<std::string> names;
+    for (const auto& r : detail::format_readers()) names.emplace_back(r.name);
+    return names;
+}
+
+namespace {
+
+std::string resolve_path(const std::string& path) { return is_directory(path) ? resolve_folder(path) : path; }
+
+}  // namespace
+
+std::string detect_format(const std::string& path) {
+    const detail::TextFile file = detail::load_text_file(resolve_path(path));
+    const detail::FormatReader* reader = detect(file);
+    if (reader == nullptr) throw ReadError(path, 0, "unknown format");
+    return reader->name;
+}
+
+SensorLog read_sensor_file(const std::string& path, const ReadOptions& options) {
+    const std::string file_path = resolve_path(path);
+    const detail::TextFile file = detail::load_text_file(file_path);
+    const detail::FormatReader* reader = nullptr;
+    if (options.format.empty() || options.format == "auto") {
+        if (options.column_map != nullptr) {
+            reader = find_reader("column-map");
+        } else {
+            reader = detect(file);
+            if (reader == nullptr) {
+                const size_t first = detail::first_content_line(file);
+                const std::string head =
+                    first < file.lines.size() ? std::string(file.lines[first].substr(0, 80)) : std::string();
+                throw ReadError(path, first + 1,
+                                "unknown format (first line '" + head +
+                                    "'); name it with --format or describe it with a column map");
+            }
+        }
+    } else {
+        reader = find_reader(options.format);
+        if (reader == nullptr) throw ReadError(path, 0, "unknown format name '" + options.format + "'");
+    }
+    SensorLog log;
+    log.format = reader->name;
+    log.path = path;
+    detail::LogBuilder builder(log, options);
+    builder.note(std::string("format: ") + reader->name + " (" + reader->description + ")" +
+                 (options.format == "auto" || options.format.empty() ? ", detected" : ", as requested"));
+    reader->read(file, options, builder, log);
+    builder.finish();
+    if (!log.axes.empty()) log.notes.push_back("body axes: " + log.axes);
+    return log;
+}
+
+std::vector<const pn_record_header_t*> merged_records(const SensorLog& log) {
+    std::vector<const pn_record_header_t*> out;
+    out.reserve(log.imu.size() + log.mag.size() + log.baro.size() + log.gnss.size());
+    for (const auto& r : log.imu) out.push_back(&r.header);
+    for (const auto& r : log.mag) out.push_back(&r.header);
+    for (const auto& r : log.baro) out.push_back(&r.header);
+    for (const auto& r : log.gnss) out.push_back(&r.header);
+    // Each stream is already in time order and they were appended IMU, MAG,
+    // BARO, GNSS: a stable sort on time keeps that order at equal t_ns.
+    std::stable_sort(out.begin(), out.end(),
+                     [](const pn_record_header_t* a, const pn_record_header_t* b) { return a->t_ns < b->t_ns; });
+    return out;
+}
+
+}  // namespace pednav::io

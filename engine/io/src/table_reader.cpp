@@ -1,0 +1,174 @@
+#include "table_reader.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace pednav::io::detail {
+
+int find_column(const std::vector<std::string>& names, const std::string& name) {
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (names[i] == name) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+void set_identity(double R[9]) {
+    for (int i = 0; i < 9; ++i) R[i] = (i % 4 == 0) ? 1.0 : 0.0;
+}
+
+void set_signed_permutation(double R[9], const int src[3], const double sign[3]) {
+    for (int i = 0; i < 9; ++i) R[i] = 0.0;
+    for (int i = 0; i < 3; ++i) R[i * 3 + src[i]] = sign[i];
+}
+
+namespace {
+
+enum class CellResult { kOk, kAbsent, kBad };
+
+struct RowContext {
+    const TableSpec& spec;
+    const std::vector<std::string_view>& fields;
+    std::string error;
+};
+
+CellResult parse_vec(RowContext& ctx, const Vec3Spec& v, double out[3]) {
+    double in[3];
+    int empty = 0;
+    NumberStatus status[3];
+    for (int i = 0; i < 3; ++i) {
+        status[i] = parse_number(ctx.fields[static_cast<size_t>(v.col[i])], &in[i]);
+        if (status[i] == NumberStatus::kEmpty) ++empty;
+    }
+    if (ctx.spec.empty_cells_mean_absent && empty == 3) return CellResult::kAbsent;
+    for (int i = 0; i < 3; ++i) {
+        if (status[i] != NumberStatus::kOk) {
+            const auto c = static_cast<size_t>(v.col[i]);
+            ctx.error = describe_bad_number(status[i], ctx.fields[c], ctx.spec.names[c]);
+            return CellResult::kBad;
+        }
+    }
+    for (int r = 0; r < 3; ++r) {
+        out[r] = v.scale * (v.R[r * 3 + 0] * in[0] + v.R[r * 3 + 1] * in[1] + v.R[r * 3 + 2] * in[2]);
+    }
+    return CellResult::kOk;
+}
+
+CellResult parse_scalar(RowContext& ctx, int col, double* out) {
+    const auto c = static_cast<size_t>(col);
+    const NumberStatus status = parse_number(ctx.fields[c], out);
+    if (status == NumberStatus::kEmpty && ctx.spec.empty_cells_mean_absent) return CellResult::kAbsent;
+    if (status != NumberStatus::kOk) {
+        ctx.error = describe_bad_number(status, ctx.fields[c], ctx.spec.names[c]);
+        return CellResult::kBad;
+    }
+    return CellResult::kOk;
+}
+
+bool is_comment(const TableSpec& spec, std::string_view line) {
+    for (const auto& prefix : spec.comment_prefixes) {
+        if (starts_with(line, prefix)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+void read_table(const TextFile& file, const TableSpec& spec, LogBuilder& builder) {
+    unsigned present = 0;
+    if (spec.accel.present()) present |= kImuBits;
+    if (spec.mag.present()) present |= stream_bit(kMag);
+    if (spec.pressure_col >= 0) present |= stream_bit(kPressure);
+
+    Clock clock("");
+    std::vector<std::string_view> fields;
+    double last_raw_time = 0.0, wrap_offset = 0.0;
+    bool have_raw_time = false;
+    size_t truncated_last_line = 0;
+
+    for (size_t index = spec.first_data_index; index < file.lines.size(); ++index) {
+        const size_t line_no = index + 1;
+        const std::string_view line = trim(file.lines[index]);
+        if (line.empty() || is_comment(spec, line)) continue;
+        split_into(line, spec.delim, fields);
+        if (fields.size() != spec.column_count) {
+            char text[160];
+            std::snprintf(text, sizeof text, "%s: %zu fields, the header has %zu",
+                          fields.size() < spec.column_count ? "truncated row" : "too many fields", fields.size(),
+                          spec.column_count);
+            builder.bad_row(line_no, text, present);
+            if (index + 1 == file.lines.size()) truncated_last_line = line_no;
+            continue;
+        }
+        RowContext ctx{spec, fields, {}};
+
+        double raw_time = 0.0;
+        if (parse_scalar(ctx, spec.time_col, &raw_time) != CellResult::kOk) {
+            builder.bad_row(line_no, ctx.error.empty() ? "no time" : ctx.error, present);
+            continue;
+        }
+        bool invalid = false;
+        for (int c : spec.valid_cols) {
+            double flag = 0.0;
+            if (parse_number(fields[static_cast<size_t>(c)], &flag) != NumberStatus::kOk || flag != 1.0) {
+                builder.bad_row(line_no, "sample flagged invalid by the sensor (" + spec.names[static_cast<size_t>(c)] + ")",
+                                present);
+                invalid = true;
+                break;
+            }
+        }
+        if (invalid) continue;
+
+        double a[3] = {0, 0, 0}, g[3] = {0, 0, 0}, m[3] = {0, 0, 0}, p = 0.0, temp = NAN;
+        bool has_imu = false, has_mag = false, has_p = false;
+        if (spec.accel.present()) {
+            const CellResult ra = parse_vec(ctx, spec.accel, a);
+            const CellResult rg = ra == CellResult::kBad ? CellResult::kBad : parse_vec(ctx, spec.gyro, g);
+            if (ra == CellResult::kBad || rg == CellResult::kBad) {
+                builder.bad_row(line_no, ctx.error, present);
+                continue;
+            }
+            if (ra != rg) {
+                builder.bad_row(line_no, "accelerometer and gyroscope cells must be both present or both empty", present);
+                continue;
+            }
+            has_imu = ra == CellResult::kOk;
+        }
+        if (spec.mag.present()) {
+            const CellResult rm = parse_vec(ctx, spec.mag, m);
+            if (rm == CellResult::kBad) {
+                builder.bad_row(line_no, "magnetometer sample: " + ctx.error, stream_bit(kMag));
+            }
+            has_mag = rm == CellResult::kOk;
+        }
+        if (spec.pressure_col >= 0) {
+            const CellResult rp = parse_scalar(ctx, spec.pressure_col, &p);
+            if (rp == CellResult::kBad) builder.bad_row(line_no, "pressure sample: " + ctx.error, stream_bit(kPressure));
+            has_p = rp == CellResult::kOk;
+            p *= spec.pressure_scale;
+            if (has_p && spec.temperature_col >= 0) {
+                double tc = 0.0;
+                if (parse_number(fields[static_cast<size_t>(spec.temperature_col)], &tc) == NumberStatus::kOk) temp = tc;
+            }
+        }
+        if (!has_imu && !has_mag && !has_p) continue;
+
+        // Raw counters and tick clocks wrap; unwrap when the value drops by more than half the wrap.
+        if (spec.counter_wrap > 0 && have_raw_time && raw_time + wrap_offset < last_raw_time - spec.counter_wrap / 2) {
+            wrap_offset += spec.counter_wrap;
+        }
+        const double unwrapped = raw_time + wrap_offset;
+        const double t_s = spec.time_kind == TableSpec::TimeKind::kCounter ? unwrapped / spec.counter_rate_hz
+                                                                            : unwrapped * spec.time_scale;
+        unsigned row_streams = (has_imu ? kImuBits : 0u) | (has_mag ? stream_bit(kMag) : 0u) |
+                               (has_p ? stream_bit(kPressure) : 0u);
+        if (!builder.accept_time(clock, line_no, t_s, row_streams)) continue;
+        have_raw_time = true;
+        last_raw_time = unwrapped;
+        if (has_imu) builder.add_imu(line_no, t_s, a, g);
+        if (has_mag) builder.add_mag(line_no, t_s, m);
+        if (has_p) builder.add_baro(line_no, t_s, p, temp);
+    }
+    if (truncated_last_line > 0) builder.note("the last line is incomplete (file cut off while writing?)");
+}
+
+}  // namespace pednav::io::detail

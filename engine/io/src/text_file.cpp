@@ -1,0 +1,152 @@
+#include "text_file.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "pednav_io/sensor_log.hpp"
+
+namespace pednav::io::detail {
+
+TextFile load_text_file(const std::string& path) {
+    struct stat st {};
+    if (stat(path.c_str(), &st) != 0) throw ReadError(path, 0, "file not found");
+    if (S_ISDIR(st.st_mode)) throw ReadError(path, 0, "is a folder, not a file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ReadError(path, 0, "cannot open the file for reading");
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    TextFile file;
+    file.path = path;
+    file.data = buffer.str();
+    if (file.data.empty()) throw ReadError(path, 0, "the file is empty");
+
+    // Binary check on the first 64 KiB: any NUL byte, or more than 5 % control
+    // characters other than tab, CR, LF.
+    const size_t probe = std::min<size_t>(file.data.size(), 65536);
+    size_t control = 0;
+    for (size_t i = 0; i < probe; ++i) {
+        const auto c = static_cast<unsigned char>(file.data[i]);
+        if (c == 0) throw ReadError(path, 0, "binary file (contains NUL bytes), not a text recording");
+        if (c < 32 && c != '\t' && c != '\r' && c != '\n') ++control;
+    }
+    if (control * 20 > probe) throw ReadError(path, 0, "binary file (control characters), not a text recording");
+
+    std::string_view all(file.data);
+    size_t start = 0;
+    while (start < all.size()) {
+        size_t end = all.find('\n', start);
+        if (end == std::string_view::npos) end = all.size();
+        std::string_view line = all.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        file.lines.push_back(line);
+        start = end + 1;
+    }
+    bool blank = true;
+    for (auto line : file.lines) {
+        if (!trim(line).empty()) {
+            blank = false;
+            break;
+        }
+    }
+    if (blank) throw ReadError(path, 0, "the file is empty (only blank lines)");
+    return file;
+}
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    return s;
+}
+
+void split_into(std::string_view line, char delim, std::vector<std::string_view>& out) {
+    out.clear();
+    if (delim == ' ') {
+        size_t i = 0;
+        while (i < line.size()) {
+            while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+            if (i >= line.size()) break;
+            size_t j = i;
+            while (j < line.size() && line[j] != ' ' && line[j] != '\t') ++j;
+            out.push_back(line.substr(i, j - i));
+            i = j;
+        }
+        return;
+    }
+    size_t start = 0;
+    while (true) {
+        size_t end = line.find(delim, start);
+        if (end == std::string_view::npos) {
+            out.push_back(trim(line.substr(start)));
+            break;
+        }
+        out.push_back(trim(line.substr(start, end - start)));
+        start = end + 1;
+    }
+}
+
+std::vector<std::string_view> split(std::string_view line, char delim) {
+    std::vector<std::string_view> out;
+    split_into(line, delim, out);
+    return out;
+}
+
+NumberStatus parse_number(std::string_view field, double* value) {
+    field = trim(field);
+    if (field.empty()) return NumberStatus::kEmpty;
+    if (field.front() == '+') field.remove_prefix(1);
+    double v = 0.0;
+    const char* first = field.data();
+    const char* last = field.data() + field.size();
+    auto result = std::from_chars(first, last, v);
+    if (result.ec != std::errc() || result.ptr != last) {
+        if (result.ec == std::errc::result_out_of_range && result.ptr == last) return NumberStatus::kNonFinite;
+        return NumberStatus::kNotANumber;
+    }
+    *value = v;
+    if (!std::isfinite(v)) return NumberStatus::kNonFinite;
+    return NumberStatus::kOk;
+}
+
+std::string describe_bad_number(NumberStatus status, std::string_view field, std::string_view column) {
+    std::string text;
+    switch (status) {
+        case NumberStatus::kEmpty: text = "empty value"; break;
+        case NumberStatus::kNonFinite: text = "non-finite value '" + std::string(trim(field)) + "'"; break;
+        default: text = "not a number: '" + std::string(trim(field).substr(0, 40)) + "'"; break;
+    }
+    if (!column.empty()) text += " in column " + std::string(column);
+    return text;
+}
+
+char guess_delimiter(std::string_view header) {
+    size_t tabs = 0, commas = 0, semis = 0;
+    for (char c : header) {
+        if (c == '\t') ++tabs;
+        if (c == ',') ++commas;
+        if (c == ';') ++semis;
+    }
+    if (tabs >= commas && tabs >= semis && tabs > 0) return '\t';
+    if (commas >= semis && commas > 0) return ',';
+    if (semis > 0) return ';';
+    return ' ';
+}
+
+std::string to_lower(std::string_view s) {
+    std::string out(s);
+    for (auto& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+bool starts_with(std::string_view s, std::string_view prefix) {
+    return s.size() >= prefix.size() && s.substr(0, prefix.size()) == prefix;
+}
+
+bool ends_with(std::string_view s, std::string_view suffix) {
+    return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
+}
+
+}  // namespace pednav::io::detail
