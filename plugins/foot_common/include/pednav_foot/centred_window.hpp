@@ -1,0 +1,94 @@
+// A time-centred sliding window over a stream of samples, O(1) amortised per
+// sample: each sample enters and leaves the running accumulator once. The
+// window of the sample at t_c holds every sample with |t - t_c| <= half_ns; its
+// result is ready once a sample with t >= t_c + half_ns has arrived, so the
+// stage's look-ahead is exactly half_ns. Storage is a ring allocated once.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace pednav::foot {
+
+// Acc provides: add(const Elem&), remove(const Elem&), reset(), and
+// Elem is any struct with an int64_t t_ns member.
+template <class Elem, class Acc>
+class CentredWindow {
+public:
+    CentredWindow(int64_t half_ns, size_t min_capacity) : half_ns_(half_ns) {
+        size_t cap = 16;
+        while (cap < min_capacity) cap <<= 1;
+        ring_.resize(cap);
+        mask_ = cap - 1;
+    }
+
+    int64_t half_ns() const { return half_ns_; }
+    Acc& acc() { return acc_; }
+
+    // Appends a sample; calls out(centre_elem, acc) for every centre whose
+    // window is complete, in time order.
+    template <class Out>
+    void push(const Elem& e, Out&& out) {
+        while (n_ - lo_ >= ring_.size()) {
+            // Ring full (input faster than the capacity assumed): shrink the
+            // window from the left, finishing the oldest centre if needed.
+            if (lo_ < c_ && lo_ < hi_) {
+                acc_.remove(at(lo_));
+                ++lo_;
+            } else {
+                emit_centre(out);
+            }
+        }
+        ring_[n_ & mask_] = e;
+        ++n_;
+        const int64_t t_new = e.t_ns;
+        while (c_ < n_ && t_new >= at(c_).t_ns + half_ns_) emit_centre(out);
+    }
+
+    // End of stream: finish every pending centre with a truncated window.
+    template <class Out>
+    void flush(Out&& out) {
+        while (c_ < n_) emit_centre(out);
+    }
+
+private:
+    const Elem& at(uint64_t i) const { return ring_[i & mask_]; }
+
+    template <class Out>
+    void emit_centre(Out& out) {
+        const Elem& centre = at(c_);
+        const int64_t t_hi = centre.t_ns + half_ns_;
+        while (hi_ < n_ && at(hi_).t_ns <= t_hi) {
+            acc_.add(at(hi_));
+            ++hi_;
+        }
+        const int64_t t_lo = centre.t_ns - half_ns_;
+        while (lo_ < c_ && at(lo_).t_ns < t_lo) {
+            acc_.remove(at(lo_));
+            ++lo_;
+        }
+        if (++since_rebuild_ >= 8192) rebuild();
+        out(centre, acc_);
+        ++c_;
+    }
+
+    // Recomputes the accumulator from the window contents, bounding the
+    // round-off that add/remove pairs accumulate over a long stream.
+    void rebuild() {
+        since_rebuild_ = 0;
+        acc_.reset();
+        for (uint64_t i = lo_; i < hi_; ++i) acc_.add(at(i));
+    }
+
+    int64_t half_ns_;
+    std::vector<Elem> ring_;
+    uint64_t mask_ = 0;
+    uint64_t n_ = 0;   // samples pushed
+    uint64_t c_ = 0;   // next centre to finish
+    uint64_t lo_ = 0;  // first sample inside the accumulator
+    uint64_t hi_ = 0;  // one past the last sample inside the accumulator
+    uint32_t since_rebuild_ = 0;
+    Acc acc_;
+};
+
+}  // namespace pednav::foot

@@ -1,0 +1,54 @@
+// 15-state error-state Kalman filter covariance and estimate, hand-written
+// for speed: block-structured transition, selection measurements as scalar
+// Joseph-form updates, symmetric by construction, no allocation.
+//
+// Error state (foot-imu-zupt-zaru-ekf eq. (24)), all "true minus estimate":
+//   x = [phi (ENU attitude error, rad), dbg (gyro bias, rad/s, body),
+//        dp (position, m, ENU), dv (velocity, m/s, ENU), dba (accel bias, m/s^2, body)]
+// with R_true = exp(skew(phi)) R_est, bias_true = bias_est + dbg, etc.
+// Continuous error dynamics (the sign convention of eq. (26) in this form):
+//   phi' = -R dbg,  dp' = dv,  dv' = -skew(f_enu) phi - R dba
+// discretised as Phi = I + A dt (eq. (25)-(26)).
+#pragma once
+
+#include <cstring>
+
+#include "so3.hpp"
+
+namespace pednav::foot {
+
+class Ekf15 {
+public:
+    static constexpr int N = 15;
+    static constexpr int ATT = 0, BG = 3, POS = 6, VEL = 9, BA = 12;
+
+    struct Noise {
+        double gyro_psd = 0;     // (rad/s)^2 / Hz: angle random walk density squared
+        double accel_psd = 0;    // (m/s^2)^2 / Hz: velocity random walk density squared
+        double gyro_bias_psd = 0;   // (rad/s)^2 / s
+        double accel_bias_psd = 0;  // (m/s^2)^2 / s
+    };
+
+    Ekf15() { reset_covariance(nullptr); }
+
+    // Diagonal initial covariance (variances in the state's units).
+    void reset_covariance(const double* diag15);
+
+    // P <- Phi P Phi^T + Q for one interval (foot-imu-zupt-zaru-ekf eq. (32)).
+    void propagate(double dt, const Mat3& r_enu_from_body, const Vec3& f_enu, const Noise& q);
+
+    // Scalar measurement z = x[i] + noise(var): Kalman gain (eq. (31)), state
+    // update (eq. (30)) and Joseph-form covariance (eq. (33)) with H = e_i.
+    void update_scalar(int i, double z, double var);
+
+    const double* x() const { return x_; }
+    double* x() { return x_; }
+    double P(int i, int j) const { return P_[i][j]; }
+    void clear_state() { std::memset(x_, 0, sizeof x_); }
+
+private:
+    double P_[N][N];
+    double x_[N];
+};
+
+}  // namespace pednav::foot

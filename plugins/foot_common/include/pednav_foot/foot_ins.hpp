@@ -1,0 +1,134 @@
+// Velocity/position mechanization of a foot-mounted IMU on top of an external
+// attitude stream, with the 15-state error-state EKF (ekf15.hpp): ZUPT and
+// ZARU during stance, HUPT at the stance after a level-floor step, error
+// injection and reset, and per-stride segmentation.
+//
+// Per sample k (attitude q_k from the attitude estimator, already including
+// every correction sent before k):
+//   f_k   = R_k (a_k - ba)                         specific force, ENU
+//   v_k   = v_{k-1} + ((f_{k-1} + f_k)/2 - g) dt   mid-interval, cf. eq. (10)
+//   p_k   = p_{k-1} + (v_{k-1} + v_k)/2 dt         cf. eq. (11)
+// then P is propagated (eq. (32)) and, in stance, the measurements
+//   ZUPT  z = 0 - v_k          = dv + n     (eq. (34)-(35), velocity rows)
+//   ZARU  z = w_k - bg         = dbg + n    (angular rate rows)
+//   HUPT  z = h_ref - p_k,z    = dp_z + n   (foot-imu-height-update-hupt eq. (5))
+// are applied as scalar updates; the estimate is injected (eq. (12)-(14) with
+// this file's sign convention) and the error state reset to zero. The attitude
+// and gyro-bias parts are returned as a correction for the attitude estimator.
+#pragma once
+
+#include <cstdint>
+
+#include "ekf15.hpp"
+
+namespace pednav::foot {
+
+struct FootInsConfig {
+    bool zupt = true;
+    bool zaru = true;
+    bool hupt = true;
+    double gravity_mps2 = 0.0;  // 0 = mean |a| over the first stance (absorbs scale errors)
+    // Process noise densities.
+    double gyro_noise_radps_per_sqrthz = 0.005;
+    double accel_noise_mps2_per_sqrthz = 0.05;
+    double gyro_bias_walk_radps_per_sqrts = 1e-4;
+    double accel_bias_walk_mps2_per_sqrts = 1e-3;
+    // Initial standard deviations.
+    double init_roll_pitch_sd_rad = 0.02;
+    double init_heading_sd_rad = 0.0;
+    double init_gyro_bias_sd_radps = 0.01;
+    double init_accel_bias_sd_mps2 = 0.1;
+    double init_velocity_sd_mps = 0.01;
+    // Measurement standard deviations.
+    double zupt_sd_mps = 0.01;
+    double zaru_sd_radps = 0.05;
+    double hupt_sd_m = 0.01;
+    // Stride segmentation and level/stairs classification.
+    double min_stance_s = 0.04;       // shorter stances do not end a stride
+    double min_swing_s = 0.15;        // motion between counted stances
+    double heel_strike_deg = 12.0;    // toe-up pitch in the swing that marks a level step
+    double max_dt_s = 0.1;
+};
+
+struct StrideOut {
+    int64_t t_start_ns;
+    int64_t t_end_ns;
+    Vec3 displacement;
+    double heading_change_rad;
+    double cov_xy[9];
+    int stride_class;  // PN_STRIDE_CLASS_*
+    int index;
+};
+
+struct SampleOut {
+    Vec3 pos;
+    Vec3 vel;
+    double cov_pos[9];
+    double heading_rad;
+    bool correction = false;    // an update changed attitude or gyro bias
+    Vec3 rot_enu_rad = Vec3::Zero();
+    Vec3 gyro_bias_delta = Vec3::Zero();
+    bool stride = false;        // `stride_out` holds a stride that ended at the previous sample
+};
+
+class FootIns {
+public:
+    explicit FootIns(const FootInsConfig& c);
+
+    // Start position and (when finite) start heading; the heading is applied
+    // as a yaw correction at the first sample.
+    void set_start(const Vec3& pos, double heading_rad);
+
+    // One sample. `stance` is the detector decision for this sample.
+    void step(int64_t t_ns, const Vec3& accel_mps2, const Vec3& gyro_radps, const Quat& q_enu_from_body,
+              const Vec3& gyro_bias_radps, bool stance, SampleOut& out);
+
+    // End of stream: the stride of a stance still open, if any.
+    bool finish(StrideOut& s);
+
+    const StrideOut& stride_out() const { return stride_; }
+    const Ekf15& ekf() const { return ekf_; }
+    double gravity() const { return g_; }
+    const Vec3& accel_bias() const { return ba_; }
+
+private:
+    void stride_logic(int64_t t_ns, double dt, bool stance, const Quat& q, SampleOut& out);
+    bool close_stance(StrideOut& s);
+    void begin_stance(int64_t t_ns);
+
+    FootInsConfig cfg_;
+    Ekf15 ekf_;
+    Ekf15::Noise noise_;
+    bool started_ = false;
+    Vec3 start_pos_ = Vec3::Zero();
+    double start_heading_ = NAN;
+    Vec3 p_ = Vec3::Zero(), v_ = Vec3::Zero(), ba_ = Vec3::Zero();
+    Vec3 f_prev_ = Vec3::Zero();
+    int64_t t_prev_ = 0;
+    double g_ = 9.80665;
+    bool g_learning_ = false;
+    double g_sum_ = 0, g_n_ = 0;
+
+    // Stride state.
+    bool in_stance_ = false;
+    bool have_anchor_ = false;      // a counted stance exists
+    int64_t stance_start_t_ = 0;
+    int64_t last_t_ = 0;
+    Vec3 last_stance_pos_ = Vec3::Zero();
+    Quat last_stance_q_ = Quat::Identity();
+    double last_stance_heading_ = 0;
+    Vec3 anchor_pos_ = Vec3::Zero();     // position at the end of the last counted stance
+    double anchor_heading_ = 0;
+    int64_t anchor_t_ = 0;
+    Quat anchor_q_ = Quat::Identity();
+    double anchor_cov_[3] = {0, 0, 0};
+    double moving_s_ = 0;           // motion time since the last counted stance
+    double max_toe_up_rad_ = 0;     // largest toe-up pitch since the last counted stance
+    bool level_step_ = true;        // class of the step that led to the current stance
+    double h_ref_ = 0;              // HUPT reference height
+    bool first_stance_done_ = false;
+    int stride_index_ = 0;
+    StrideOut stride_{};
+};
+
+}  // namespace pednav::foot

@@ -1,0 +1,117 @@
+// Rotation helpers shared by the foot plugins: skew matrices, the rotation
+// vector exponential and logarithm, and the level-frame alignment from a
+// gravity direction and a heading. Frames: navigation ENU, body = the sensor's
+// own right-handed axes; quaternions are Hamilton, w first (Eigen's storage
+// order differs, its constructor takes w first).
+#pragma once
+
+#include <cmath>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace pednav::foot {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Quat = Eigen::Quaterniond;
+
+// skew(w) v = w x v.  foot-imu-zupt-zaru-ekf eq. (9), as corrected in ERRATA.md.
+inline Mat3 skew(const Vec3& w) {
+    Mat3 s;
+    s << 0.0, -w.z(), w.y(), w.z(), 0.0, -w.x(), -w.y(), w.x(), 0.0;
+    return s;
+}
+
+// Unit quaternion of the rotation vector `r` (axis * angle, rad).
+inline Quat quat_exp(const Vec3& r) {
+    const double a2 = r.squaredNorm();
+    double s, c;
+    if (a2 < 1e-12) {
+        // Taylor series of sin(a/2)/a and cos(a/2) to fourth order.
+        s = 0.5 - a2 / 48.0;
+        c = 1.0 - a2 / 8.0;
+    } else {
+        const double a = std::sqrt(a2);
+        s = std::sin(0.5 * a) / a;
+        c = std::cos(0.5 * a);
+    }
+    return Quat(c, s * r.x(), s * r.y(), s * r.z());
+}
+
+// Rotation vector of the unit quaternion q (angle in [0, pi]).
+inline Vec3 quat_log(const Quat& q) {
+    const Vec3 v(q.x(), q.y(), q.z());
+    const double n = v.norm();
+    const double w = q.w();
+    if (n < 1e-12) return 2.0 * v / (w < 0 ? -1.0 : 1.0);
+    double angle = 2.0 * std::atan2(n, std::abs(w));
+    return (w < 0 ? -angle : angle) * v / n;
+}
+
+// Cayley (Pade 1/1) transform of the rotation vector r:
+// (I - skew(r)/2)^-1 (I + skew(r)/2). foot-imu-zupt-zaru-ekf eq. (8), (14)
+// as corrected in ERRATA.md. Exact to second order in |r|.
+inline Mat3 cayley(const Vec3& r) {
+    const Mat3 s = 0.5 * skew(r);
+    return (Mat3::Identity() - s).inverse() * (Mat3::Identity() + s);
+}
+
+// Heading, clockwise from north, of the body x axis projected on the level
+// plane; falls back to the body y axis (minus 90 deg) when x is near vertical.
+inline double heading_of(const Quat& q_enu_from_body) {
+    const Mat3 r = q_enu_from_body.toRotationMatrix();
+    if (std::hypot(r(0, 0), r(1, 0)) > 0.1) return std::atan2(r(0, 0), r(1, 0));
+    return std::atan2(r(0, 1), r(1, 1)) + M_PI / 2.0;
+}
+
+// Attitude whose body "up" is the measured specific force at rest and whose
+// body x axis (or y when x is near vertical) projected level points at
+// `heading_rad` (clockwise from north). Works for any sensor orientation.
+inline Quat level_attitude(const Vec3& f_body_at_rest, double heading_rad) {
+    const Vec3 up_b = f_body_at_rest.normalized();
+    Vec3 ref = Vec3::UnitX();
+    double offset = 0.0;
+    if (std::abs(up_b.x()) > 0.95) {
+        ref = Vec3::UnitY();
+        offset = -M_PI / 2.0;  // heading_of() adds pi/2 back for this case
+    }
+    const Vec3 h_b = (ref - ref.dot(up_b) * up_b).normalized();  // level direction of ref
+    const Vec3 l_b = up_b.cross(h_b);                               // level, left of h
+    const double psi = heading_rad + offset;
+    // h points at azimuth psi: E = sin(psi) h - cos(psi) l, N = cos(psi) h + sin(psi) l.
+    Mat3 r_enu_from_body;
+    r_enu_from_body.row(0) = (std::sin(psi) * h_b - std::cos(psi) * l_b).transpose();
+    r_enu_from_body.row(1) = (std::cos(psi) * h_b + std::sin(psi) * l_b).transpose();
+    r_enu_from_body.row(2) = up_b.transpose();
+    Quat q(r_enu_from_body);
+    q.normalize();
+    return q;
+}
+
+// Tilt-compensated magnetic heading (clockwise from magnetic north) of the
+// heading reference axis of level_attitude(): the field is projected on the
+// level plane spanned by that axis and its left neighbour. Replaces the
+// garbled foot-imu-zupt-zaru-ekf eq. (3)-(5) (see ERRATA.md); add the
+// declination (east positive) to get true heading.
+inline double magnetic_heading(const Vec3& f_body_at_rest, const Vec3& mag_body) {
+    const Vec3 up_b = f_body_at_rest.normalized();
+    Vec3 ref = Vec3::UnitX();
+    double offset = 0.0;
+    if (std::abs(up_b.x()) > 0.95) {
+        ref = Vec3::UnitY();
+        offset = -M_PI / 2.0;
+    }
+    const Vec3 h_b = (ref - ref.dot(up_b) * up_b).normalized();
+    const Vec3 l_b = up_b.cross(h_b);
+    // Field north N = cos(psi) h + sin(psi) l  =>  m.h = B cos(psi), m.l = B sin(psi).
+    return std::atan2(mag_body.dot(l_b), mag_body.dot(h_b)) - offset;
+}
+
+inline double wrap_pi(double a) {
+    a = std::fmod(a + M_PI, 2.0 * M_PI);
+    if (a < 0) a += 2.0 * M_PI;
+    return a - M_PI;
+}
+
+}  // namespace pednav::foot

@@ -1,0 +1,172 @@
+// Foot stance (zero-velocity) detectors with windows in seconds, O(1) per
+// sample, no allocation after construction.
+//
+// Both detectors are two centred-window stages:
+//   1. a per-sample test statistic over a centred window of window_s, turned
+//      into a 0/1 stance decision;
+//   2. a majority (binary median) filter over a centred window of
+//      median_window_s.
+// The decision about the sample at t is known once input up to
+// t + window_s/2 + median_window_s/2 has arrived: that is latency_ns().
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "centred_window.hpp"
+
+namespace pednav::foot {
+
+struct StanceDecision {
+    int64_t t_ns;     // time of the classified IMU sample
+    bool stance;      // after the majority filter
+    double statistic; // stage-1 statistic of that sample
+};
+
+// foot-imu-zupt-zaru-ekf sec. 2.3, eq. (16)-(23), windows in seconds.
+struct MultiConditionConfig {
+    double accel_min_mps2 = 9.0;        // C1 lower bound on |a|, eq. (17)
+    double accel_max_mps2 = 11.0;       // C1 upper bound on |a|
+    double accel_std_max_mps2 = 0.5;    // C2: std of |a| over the window below this, eq. (20)
+    double gyro_max_radps = 1.0;        // C3: |w| below this, eq. (22)
+    double window_s = 0.15;             // centred window of eq. (18)-(19) (paper: 31 samples at 100 Hz)
+    double median_window_s = 0.11;      // majority filter (paper: 11 samples at 100 Hz)
+};
+
+// SHOE / GLRT detector (Skog, Handel, Nilsson, Rantakokko 2010, eq. (10)):
+// T = 1/W sum_j ( |a_j - g u|^2 / sigma_a^2 + |w_j|^2 / sigma_w^2 ), with
+// u the mean specific force direction over the window; stance when T < gamma.
+// With gravity_mps2 = 0 the window's own mean |a| replaces g, which makes the
+// test blind to accelerometer scale errors (a sensor reading 0.97 g at rest).
+struct ShoeConfig {
+    double accel_sd_mps2 = 0.4;     // sigma_a
+    double gyro_sd_radps = 0.15;    // sigma_w
+    double threshold = 1.0;         // gamma (dimensionless, W-normalised)
+    double gravity_mps2 = 0.0;      // g; 0 = the window's mean |a|
+    double window_s = 0.1;          // W in seconds
+    double median_window_s = 0.11;  // majority filter
+};
+
+namespace detail {
+
+struct ImuElem {
+    int64_t t_ns;
+    double a[3];
+    double w2;   // |w|^2
+    double am;   // |a| - 9.81 (offset keeps the running sums well conditioned)
+};
+
+struct MultiAcc {
+    double s1 = 0, s2 = 0;
+    double n = 0;
+    void add(const ImuElem& e) { s1 += e.am; s2 += e.am * e.am; n += 1; }
+    void remove(const ImuElem& e) { s1 -= e.am; s2 -= e.am * e.am; n -= 1; }
+    void reset() { *this = MultiAcc{}; }
+};
+
+struct ShoeAcc {
+    double sa[3] = {0, 0, 0};
+    double sa2 = 0, sw2 = 0, n = 0;
+    void add(const ImuElem& e) {
+        for (int i = 0; i < 3; ++i) sa[i] += e.a[i];
+        sa2 += e.a[0] * e.a[0] + e.a[1] * e.a[1] + e.a[2] * e.a[2];
+        sw2 += e.w2;
+        n += 1;
+    }
+    void remove(const ImuElem& e) {
+        for (int i = 0; i < 3; ++i) sa[i] -= e.a[i];
+        sa2 -= e.a[0] * e.a[0] + e.a[1] * e.a[1] + e.a[2] * e.a[2];
+        sw2 -= e.w2;
+        n -= 1;
+    }
+    void reset() { *this = ShoeAcc{}; }
+};
+
+struct VoteElem {
+    int64_t t_ns;
+    double statistic;
+    bool stance;
+};
+struct VoteAcc {
+    int ones = 0, n = 0;
+    void add(const VoteElem& e) { ones += e.stance ? 1 : 0; ++n; }
+    void remove(const VoteElem& e) { ones -= e.stance ? 1 : 0; --n; }
+    void reset() { *this = VoteAcc{}; }
+};
+
+inline size_t capacity_for(double window_s, double rate_hz) {
+    return static_cast<size_t>(std::ceil(window_s * rate_hz)) + 64;
+}
+
+}  // namespace detail
+
+// Ring capacities are sized for max_rate_hz (samples per second the detector
+// can take without shrinking its windows).
+class StanceDetector {
+public:
+    enum class Kind { MultiCondition, Shoe };
+
+    StanceDetector(const MultiConditionConfig& c, double max_rate_hz);
+    StanceDetector(const ShoeConfig& c, double max_rate_hz);
+
+    int64_t latency_ns() const { return stat_.half_ns() + vote_.half_ns(); }
+
+    // Feeds one IMU sample (SI, sensor axes); calls out(const StanceDecision&)
+    // for each sample whose decision became final.
+    template <class Out>
+    void push(int64_t t_ns, const double accel_mps2[3], const double gyro_radps[3], Out&& out) {
+        detail::ImuElem e;
+        e.t_ns = t_ns;
+        e.a[0] = accel_mps2[0];
+        e.a[1] = accel_mps2[1];
+        e.a[2] = accel_mps2[2];
+        e.w2 = gyro_radps[0] * gyro_radps[0] + gyro_radps[1] * gyro_radps[1] + gyro_radps[2] * gyro_radps[2];
+        e.am = std::sqrt(e.a[0] * e.a[0] + e.a[1] * e.a[1] + e.a[2] * e.a[2]) - 9.81;
+        stat_.push(e, [&](const detail::ImuElem& c, const StatAcc& acc) { vote(c, acc, out); });
+    }
+
+    template <class Out>
+    void flush(Out&& out) {
+        stat_.flush([&](const detail::ImuElem& c, const StatAcc& acc) { vote(c, acc, out); });
+        vote_.flush([&](const detail::VoteElem& v, const detail::VoteAcc& a) { decide(v, a, out); });
+    }
+
+    // Stage-1 decision and statistic for one centre (exposed for tests).
+    bool test(const detail::ImuElem& centre, double& statistic) const;
+
+private:
+    struct StatAcc {
+        detail::MultiAcc multi;
+        detail::ShoeAcc shoe;
+        bool is_shoe = false;
+        void add(const detail::ImuElem& e) { is_shoe ? shoe.add(e) : multi.add(e); }
+        void remove(const detail::ImuElem& e) { is_shoe ? shoe.remove(e) : multi.remove(e); }
+        void reset() { multi.reset(); shoe.reset(); }
+    };
+
+    template <class Out>
+    void vote(const detail::ImuElem& c, const StatAcc& acc, Out& out) {
+        acc_view_ = &acc;
+        detail::VoteElem v;
+        v.t_ns = c.t_ns;
+        v.stance = test(c, v.statistic);
+        vote_.push(v, [&](const detail::VoteElem& e, const detail::VoteAcc& a) { decide(e, a, out); });
+    }
+
+    template <class Out>
+    static void decide(const detail::VoteElem& e, const detail::VoteAcc& a, Out& out) {
+        bool s = e.stance;
+        if (2 * a.ones > a.n) s = true;
+        else if (2 * a.ones < a.n) s = false;
+        out(StanceDecision{e.t_ns, s, e.statistic});
+    }
+
+    Kind kind_;
+    MultiConditionConfig multi_{};
+    ShoeConfig shoe_{};
+    CentredWindow<detail::ImuElem, StatAcc> stat_;
+    CentredWindow<detail::VoteElem, detail::VoteAcc> vote_;
+    const StatAcc* acc_view_ = nullptr;
+};
+
+}  // namespace pednav::foot

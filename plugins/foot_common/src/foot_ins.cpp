@@ -1,0 +1,201 @@
+#include "pednav_foot/foot_ins.hpp"
+
+#include <algorithm>
+
+#include <pednav/pn_types.h>
+
+namespace pednav::foot {
+
+FootIns::FootIns(const FootInsConfig& c) : cfg_(c) {
+    noise_.gyro_psd = c.gyro_noise_radps_per_sqrthz * c.gyro_noise_radps_per_sqrthz;
+    noise_.accel_psd = c.accel_noise_mps2_per_sqrthz * c.accel_noise_mps2_per_sqrthz;
+    noise_.gyro_bias_psd = c.gyro_bias_walk_radps_per_sqrts * c.gyro_bias_walk_radps_per_sqrts;
+    noise_.accel_bias_psd = c.accel_bias_walk_mps2_per_sqrts * c.accel_bias_walk_mps2_per_sqrts;
+    double d[Ekf15::N] = {0};
+    const auto sq = [](double x) { return x * x; };
+    d[Ekf15::ATT] = d[Ekf15::ATT + 1] = sq(c.init_roll_pitch_sd_rad);
+    d[Ekf15::ATT + 2] = sq(c.init_heading_sd_rad);
+    for (int i = 0; i < 3; ++i) {
+        d[Ekf15::BG + i] = sq(c.init_gyro_bias_sd_radps);
+        d[Ekf15::VEL + i] = sq(c.init_velocity_sd_mps);
+        d[Ekf15::BA + i] = sq(c.init_accel_bias_sd_mps2);
+    }
+    ekf_.reset_covariance(d);
+    g_learning_ = !(c.gravity_mps2 > 0);
+    if (!g_learning_) g_ = c.gravity_mps2;
+}
+
+void FootIns::set_start(const Vec3& pos, double heading_rad) {
+    start_pos_ = pos;
+    start_heading_ = heading_rad;
+}
+
+void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in, const Vec3& bg, bool stance,
+                   SampleOut& out) {
+    Quat q = q_in;
+    out.correction = false;
+    out.stride = false;
+    out.rot_enu_rad.setZero();
+    out.gyro_bias_delta.setZero();
+    double dt = 0.0;
+
+    if (!started_) {
+        started_ = true;
+        p_ = start_pos_;
+        v_.setZero();
+        h_ref_ = p_.z();
+        if (std::isfinite(start_heading_)) {
+            // The start heading given to the engine reaches the attitude
+            // estimator as a yaw correction about ENU up.
+            const Vec3 rot(0.0, 0.0, wrap_pi(heading_of(q) - start_heading_));
+            q = quat_exp(rot) * q;
+            out.correction = true;
+            out.rot_enu_rad = rot;
+        }
+    } else {
+        dt = std::min(std::max((t_ns - t_prev_) * 1e-9, 0.0), cfg_.max_dt_s);
+    }
+
+    if (g_learning_) {
+        if (stance) {
+            g_sum_ += (a - ba_).norm();
+            g_n_ += 1;
+            g_ = g_sum_ / g_n_;
+        } else if (g_n_ > 0) {
+            g_learning_ = false;
+        }
+    }
+
+    Mat3 R = q.toRotationMatrix();
+    Vec3 f = R * (a - ba_);
+    if (dt > 0) {
+        // Mid-interval specific force: foot-imu-zupt-zaru-ekf eq. (10)-(11)
+        // with trapezoidal integration.
+        const Vec3 acc = 0.5 * (f_prev_ + f) - Vec3(0.0, 0.0, g_);
+        const Vec3 v_new = v_ + acc * dt;
+        p_ += 0.5 * (v_ + v_new) * dt;
+        v_ = v_new;
+        ekf_.propagate(dt, R, f, noise_);
+    }
+
+    if (stance && !in_stance_) begin_stance(t_ns);
+    if (stance && (cfg_.zupt || cfg_.zaru || cfg_.hupt)) {
+        if (cfg_.zupt) {
+            const double var = cfg_.zupt_sd_mps * cfg_.zupt_sd_mps;
+            for (int i = 0; i < 3; ++i) ekf_.update_scalar(Ekf15::VEL + i, -v_[i], var);
+        }
+        if (cfg_.zaru) {
+            const double var = cfg_.zaru_sd_radps * cfg_.zaru_sd_radps;
+            const Vec3 w_est = w - bg;
+            for (int i = 0; i < 3; ++i) ekf_.update_scalar(Ekf15::BG + i, w_est[i], var);
+        }
+        if (cfg_.hupt && level_step_) {
+            ekf_.update_scalar(Ekf15::POS + 2, h_ref_ - p_.z(), cfg_.hupt_sd_m * cfg_.hupt_sd_m);
+        }
+        // Inject and reset (foot-imu-zupt-zaru-ekf eq. (12)-(14)).
+        const double* x = ekf_.x();
+        const Vec3 phi(x[0], x[1], x[2]);
+        const Vec3 dbg(x[3], x[4], x[5]);
+        p_ += Vec3(x[6], x[7], x[8]);
+        v_ += Vec3(x[9], x[10], x[11]);
+        ba_ += Vec3(x[12], x[13], x[14]);
+        q = quat_exp(phi) * q;
+        q.normalize();
+        out.correction = true;
+        out.rot_enu_rad += phi;
+        out.gyro_bias_delta = dbg;
+        ekf_.clear_state();
+        R = q.toRotationMatrix();
+        f = R * (a - ba_);
+    }
+    f_prev_ = f;
+    t_prev_ = t_ns;
+
+    stride_logic(t_ns, dt, stance, q, out);
+
+    out.pos = p_;
+    out.vel = v_;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) out.cov_pos[3 * r + c] = ekf_.P(Ekf15::POS + r, Ekf15::POS + c);
+    out.heading_rad = heading_of(q);
+}
+
+bool FootIns::close_stance(StrideOut& s) {
+    const double duration = (last_t_ - stance_start_t_) * 1e-9;
+    if (duration < cfg_.min_stance_s) return false;
+    const double heading = heading_of(last_stance_q_);
+    double cov[3];
+    for (int i = 0; i < 3; ++i) cov[i] = ekf_.P(Ekf15::POS + i, Ekf15::POS + i);
+    bool emitted = false;
+    if (!have_anchor_) {
+        have_anchor_ = true;
+    } else if (moving_s_ >= cfg_.min_swing_s) {
+        s.t_start_ns = anchor_t_;
+        s.t_end_ns = last_t_;
+        s.displacement = last_stance_pos_ - anchor_pos_;
+        s.heading_change_rad = wrap_pi(heading - anchor_heading_);
+        std::fill(s.cov_xy, s.cov_xy + 9, 0.0);
+        for (int i = 0; i < 3; ++i) s.cov_xy[4 * i] = std::max(cov[i] - anchor_cov_[i], 1e-6);
+        if (level_step_) s.stride_class = PN_STRIDE_CLASS_LEVEL;
+        else s.stride_class = s.displacement.z() >= 0 ? PN_STRIDE_CLASS_STAIRS_UP : PN_STRIDE_CLASS_STAIRS_DOWN;
+        s.index = stride_index_++;
+        emitted = true;
+    } else {
+        return false;  // a stance after a too-short swing: the stride goes on
+    }
+    anchor_pos_ = last_stance_pos_;
+    anchor_heading_ = heading;
+    anchor_t_ = last_t_;
+    anchor_q_ = last_stance_q_;
+    for (int i = 0; i < 3; ++i) anchor_cov_[i] = cov[i];
+    moving_s_ = 0;
+    max_toe_up_rad_ = 0;
+    return emitted;
+}
+
+void FootIns::begin_stance(int64_t t_ns) {
+    in_stance_ = true;
+    stance_start_t_ = t_ns;
+    if (!have_anchor_) {
+        level_step_ = true;
+        h_ref_ = p_.z();
+    } else if (moving_s_ >= cfg_.min_swing_s) {
+        // foot-imu-height-update-hupt sec. 2.1: a heel strike (toe-up pitch
+        // before the landing) marks a level-floor step; the height then equals
+        // the height of the previous stance (eq. (5)).
+        level_step_ = max_toe_up_rad_ >= cfg_.heel_strike_deg * M_PI / 180.0;
+        h_ref_ = anchor_pos_.z();
+    }
+}
+
+void FootIns::stride_logic(int64_t t_ns, double dt, bool stance, const Quat& q, SampleOut& out) {
+    if (stance) {
+        last_t_ = t_ns;
+        last_stance_pos_ = p_;
+        last_stance_q_ = q;
+        return;
+    }
+    if (in_stance_) {
+        in_stance_ = false;
+        out.stride = close_stance(stride_);
+    }
+    moving_s_ += dt;
+    if (have_anchor_) {
+        const double vh = std::hypot(v_.x(), v_.y());
+        if (vh > 0.3) {
+            // Pitch about the level axis left of the motion, relative to the
+            // attitude at the last stance; toe-up is a negative rotation about it.
+            const Vec3 left(-v_.y() / vh, v_.x() / vh, 0.0);
+            const double toe_up = -quat_log(q * anchor_q_.conjugate()).dot(left);
+            max_toe_up_rad_ = std::max(max_toe_up_rad_, toe_up);
+        }
+    }
+}
+
+bool FootIns::finish(StrideOut& s) {
+    if (!in_stance_) return false;
+    in_stance_ = false;
+    return close_stance(s);
+}
+
+}  // namespace pednav::foot

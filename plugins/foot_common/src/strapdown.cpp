@@ -1,0 +1,108 @@
+#include "pednav_foot/strapdown.hpp"
+
+#include <algorithm>
+
+namespace pednav::foot {
+
+void Strapdown::reset_still() {
+    sum_a_.setZero();
+    sum_w_.setZero();
+    n_still_ = 0;
+    sum_m_.setZero();
+    n_mag_ = 0;
+}
+
+void Strapdown::align(int64_t /*t_ns*/) {
+    const Vec3 f = n_still_ > 0 ? Vec3(sum_a_ / n_still_) : last_a_;
+    double heading = cfg_.initial_heading_deg * M_PI / 180.0;
+    heading_from_mag_ = false;
+    if (cfg_.use_magnetometer && n_mag_ > 0) {
+        const Vec3 m = sum_m_ / n_mag_;
+        const double b = m.norm();
+        if (b >= cfg_.mag_min_ut && b <= cfg_.mag_max_ut) {
+            heading = magnetic_heading(f, m) + cfg_.declination_deg * M_PI / 180.0;
+            heading_from_mag_ = true;
+        }
+    }
+    q_ = level_attitude(f, heading);
+    if (cfg_.gyro_bias_from_still && n_still_ > 0) bias_ = sum_w_ / n_still_;
+    aligned_ = true;
+}
+
+bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
+    if (!aligned_) {
+        if (!first_seen_) {
+            first_seen_ = true;
+            t_first_ = t_ns;
+        }
+        last_a_ = a;
+        const bool still_rate = w.norm() < cfg_.align_gyro_max_radps;
+        const bool still_acc = n_still_ == 0 || (a - sum_a_ / n_still_).norm() < cfg_.align_accel_dev_mps2;
+        if (still_rate && still_acc) {
+            if (n_still_ == 0) t_still_start_ = t_ns;
+            sum_a_ += a;
+            sum_w_ += w;
+            n_still_ += 1;
+            t_still_last_ = t_ns;
+            if ((t_ns - t_still_start_) * 1e-9 >= cfg_.align_still_s) align(t_ns);
+        } else if (n_still_ > 0 && (t_still_last_ - t_still_start_) * 1e-9 >= cfg_.align_min_still_s) {
+            // Motion starts after a usable still period: align on it, then
+            // integrate this sample from the last still one.
+            align(t_still_last_);
+            t_prev_ = t_still_last_;
+            w_prev_ = sum_w_ / n_still_;
+            have_prev_ = true;
+        } else {
+            reset_still();
+            if (still_rate) {
+                t_still_start_ = t_ns;
+                sum_a_ += a;
+                sum_w_ += w;
+                n_still_ = 1;
+                t_still_last_ = t_ns;
+            }
+        }
+        if (!aligned_ && (t_ns - t_first_) * 1e-9 >= cfg_.align_timeout_s) align(t_ns);
+        if (!aligned_) return false;
+        if (!have_prev_) {
+            t_prev_ = t_ns;
+            w_prev_ = w;
+            have_prev_ = true;
+            return true;
+        }
+    }
+
+    double dt = (t_ns - t_prev_) * 1e-9;
+    dt = std::min(std::max(dt, 0.0), cfg_.max_dt_s);
+    if (dt > 0) {
+        const Vec3 w0 = w_prev_ - bias_;
+        const Vec3 w1 = w - bias_;
+        Vec3 theta = 0.5 * (w0 + w1) * dt;
+        if (cfg_.coning) theta += (dt * dt / 12.0) * w0.cross(w1);
+        q_ = q_ * quat_exp(theta);
+        q_.normalize();
+    }
+    t_prev_ = t_ns;
+    w_prev_ = w;
+    return true;
+}
+
+void Strapdown::on_mag(int64_t t_ns, const Vec3& m) {
+    if (aligned_ || n_still_ == 0) return;
+    if (t_ns < t_still_start_) return;
+    sum_m_ += m;
+    n_mag_ += 1;
+}
+
+void Strapdown::apply_correction(const Vec3& rot, const Vec3& dbias) {
+    q_ = quat_exp(rot) * q_;
+    q_.normalize();
+    bias_ += dbias;
+}
+
+void Strapdown::set_attitude(const Quat& q) {
+    q_ = q.normalized();
+    aligned_ = true;
+}
+
+}  // namespace pednav::foot
