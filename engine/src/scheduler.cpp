@@ -174,6 +174,7 @@ pn_status_t Scheduler::reset(pn_error_t* err) {
         if (PN_FAILED(st)) return st;
         s->flushed = false;
         s->last_stored_t_ns = INT64_MIN;
+        s->last_input_t_ns = INT64_MIN;
         for (auto& in : s->forward) in.cursor = 0;
         for (auto& in : s->feedback) in.cursor = 0;
     }
@@ -238,6 +239,7 @@ void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
             ++in.cursor;
         }
     }
+    s.last_input_t_ns = t_ns;
     call_process(s, batch, count);
 }
 
@@ -278,8 +280,13 @@ void Scheduler::drain() {
         for (size_t k = 0; k < n; ++k) {
             Stage& s = *stages_[k];
             next_t[k] = peek(s, limit);
-            const int64_t done = next_t[k] == kInf ? limit : next_t[k] - 1;
-            limit = s.flushed ? done : saturating_sub(done, s.latency_ns);
+            // A zero-latency (or flushed) stage has emitted everything about
+            // the times before its next input; a stage with look-ahead L only
+            // what is about its newest consumed input time minus L.
+            if (s.flushed || s.latency_ns == 0)
+                limit = next_t[k] == kInf ? limit : next_t[k] - 1;
+            else
+                limit = saturating_sub(s.last_input_t_ns, s.latency_ns);
         }
         // Deepest stage with work first: lock-step through the pipeline.
         bool progressed = false;

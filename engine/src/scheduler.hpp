@@ -7,9 +7,11 @@
 //     queues of later stages for the types it consumes from them (feedback
 //     edges, delivered before its next forward record).
 //   - Look-ahead: a stage declaring latency L has emitted every output about
-//     time t once it has consumed its inputs up to t + L. Stage k+1 may only
-//     read records up to limit(k+1) = done(k) - L(k), so downstream stages see
-//     a sample and the decisions about it together. Output latency = sum of L.
+//     time t once it has consumed an input at t + L. Stage k+1 may only read
+//     records up to limit(k+1) = newest input of stage k - L(k), so downstream
+//     stages see a sample and the decisions about it together; a stage without
+//     look-ahead passes on the limit of the stage above it, up to its next
+//     pending input. Output latency = sum of L.
 //   - Lock-step: the deepest stage with work goes first, so a stage consumes
 //     sample n before any zero-latency stage upstream of it sees sample n+1;
 //     feedback emitted at sample n therefore applies from sample n+1.
@@ -55,6 +57,7 @@ struct Stage {
     // State of the current segment.
     bool flushed = false;
     int64_t last_stored_t_ns = INT64_MIN;
+    int64_t last_input_t_ns = INT64_MIN;  // newest forward record consumed
     std::string sink_problem;  // why the sink last refused a record
 
     // Counters.
