@@ -1,0 +1,132 @@
+// Bad files: each problem is reported with its line number and the good rows
+// around it are kept; fatal ones throw ReadError naming the file and reason.
+#include <doctest/doctest.h>
+
+#include <sstream>
+#include <string>
+
+#include "pednav_io/sensor_log.hpp"
+#include "test_util.hpp"
+
+using namespace pednav::io;
+using namespace pednav::io::test;
+
+namespace {
+
+// Canonical CSV at 100 Hz; rows i = 0..n-1 at t = t0 + i / 100; line numbers
+// are 1 (comment) + 1 (header) + i + 1.
+std::string canonical_rows(int n, double t0 = 0.0) {
+    std::ostringstream out;
+    out.precision(10);
+    for (int i = 0; i < n; ++i) {
+        out << t0 + i * 0.01 << ",0.1,0.2,9.8," << 0.01 * i << ",0,0.02\n";
+    }
+    return out.str();
+}
+
+const std::string kHeader = "# a walk\nt,ax,ay,az,gx,gy,gz\n";
+
+std::string error_of(const std::string& path) {
+    try {
+        read_sensor_file(path);
+    } catch (const ReadError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("canonical CSV: a clean file") {
+    const std::string dir = temp_dir();
+    const std::string path = write_file(dir, "clean.csv", kHeader + canonical_rows(300));
+    const SensorLog log = read_sensor_file(path);
+    CHECK(log.format == "pednav-csv");
+    CHECK(log.imu.size() == 300);
+    CHECK(log.issues.empty());
+    CHECK(log.imu[7].header.t_ns == 70000000);
+    CHECK(log.imu[7].gyro_radps[0] == doctest::Approx(0.07));
+    CHECK(log.stream("accel")->rate_hz == doctest::Approx(100.0));
+}
+
+TEST_CASE("canonical CSV: truncated line, text, NaN, backwards time, duplicate, 10 s gap") {
+    const std::string dir = temp_dir();
+    std::string body = canonical_rows(100);            // lines 3..102
+    body += "1.00,0.1,0.2\n";                           // line 103: truncated
+    body += "1.01,0.1,abc,9.8,0,0,0\n";                 // line 104: text in a number
+    body += "1.02,0.1,0.2,NaN,0,0,0\n";                 // line 105: NaN
+    body += "1.03,0.1,0.2,9.8,0,0,0\n";                 // line 106: good
+    body += "0.50,0.1,0.2,9.8,0,0,0\n";                 // line 107: time goes backwards
+    body += "1.03,0.1,0.2,9.8,0,0,0\n";                 // line 108: repeated time
+    body += canonical_rows(100, 11.04);                 // lines 109..208: after a 10 s gap
+    body += "12.05,0.1,0.2,9.";                         // line 209: cut off while writing
+    const std::string path = write_file(dir, "bad_rows.csv", kHeader + body);
+    const SensorLog log = read_sensor_file(path);
+    CHECK(log.imu.size() == 100 + 1 + 100);
+    CHECK(has_issue(log, 103, "truncated row"));
+    CHECK(has_issue(log, 104, "not a number: 'abc' in column ay"));
+    CHECK(has_issue(log, 105, "non-finite value 'NaN' in column az"));
+    CHECK(has_issue(log, 107, "time goes backwards"));
+    CHECK(has_issue(log, 108, "1 samples with a repeated timestamp dropped"));
+    CHECK(has_issue(log, 109, "gap of 10.010 s"));
+    CHECK(has_issue(log, 209, "truncated row"));
+    const StreamInfo* accel = log.stream("accel");
+    REQUIRE(accel != nullptr);
+    CHECK(accel->bad_rows == 5);
+    CHECK(accel->gaps == 1);
+    CHECK(accel->duration_s == doctest::Approx(12.03));
+    // Good rows on both sides are kept, in order.
+    CHECK(log.imu[99].header.t_ns == 990000000);
+    CHECK(log.imu[100].header.t_ns == 1030000000);
+    CHECK(log.imu[101].header.t_ns == 11040000000);
+}
+
+TEST_CASE("canonical CSV: optional streams, empty cells, extra columns") {
+    const std::string dir = temp_dir();
+    const std::string text =
+        "t,ax,ay,az,gx,gy,gz,mx,my,mz,p,comment\n"
+        "0.00,0,0,9.8,0,0,0,20,0,-40,101325,a\n"
+        "0.01,0,0,9.8,0,0,0,,,,,b\n"
+        "0.02,,,,,,,21,0,-40,,c\n"
+        "0.03,0,0,9.8,0,0,0,,,,101320,d\n";
+    const SensorLog log = read_sensor_file(write_file(dir, "multi.csv", text));
+    CHECK(log.imu.size() == 3);
+    CHECK(log.mag.size() == 2);
+    CHECK(log.baro.size() == 2);
+    CHECK(log.mag[1].header.t_ns == 20000000);
+    CHECK(log.mag[1].mag_ut[0] == doctest::Approx(21.0));
+    CHECK(log.baro[1].pressure_pa == doctest::Approx(101320.0));
+    CHECK(log.issues.empty());
+}
+
+TEST_CASE("unit sanity: gravity ~1 and gyro in deg/s are reported, not converted") {
+    const std::string dir = temp_dir();
+    std::ostringstream body;
+    for (int i = 0; i < 200; ++i) body << i * 0.01 << ",0.01,0.02,1.0," << (i % 20 == 0 ? 300 : 5) << ",0,0\n";
+    const SensorLog log = read_sensor_file(write_file(dir, "units.csv", "t,ax,ay,az,gx,gy,gz\n" + body.str()));
+    CHECK(has_issue(log, 0, "look like g, not m/s^2"));
+    CHECK(has_issue(log, 0, "look like deg/s"));
+    CHECK(log.imu[0].accel_mps2[2] == doctest::Approx(1.0));  // not converted
+}
+
+TEST_CASE("fatal: missing, empty, binary, unknown, no accelerometer/gyroscope columns") {
+    const std::string dir = temp_dir();
+    CHECK(error_of(dir + "/nope.csv").find("nope.csv: file not found") != std::string::npos);
+    CHECK(error_of(write_file(dir, "empty.csv", "")).find("the file is empty") != std::string::npos);
+    CHECK(error_of(write_file(dir, "blank.csv", "\n\n  \n")).find("empty") != std::string::npos);
+    CHECK(error_of(write_file(dir, "binary.csv", std::string("PK\x03\x04\x00\x00\x01\x02", 8) + "abc"))
+              .find("binary file") != std::string::npos);
+    CHECK(error_of(write_file(dir, "unknown.csv", "foo,bar\n1,2\n")).find("unknown format") != std::string::npos);
+    const std::string no_gyro = error_of(write_file(dir, "nogyro.csv", "# x\nt,ax,ay,az\n0,0,0,9.8\n"));
+    CHECK(no_gyro.find("nogyro.csv:2: no accelerometer/gyroscope columns: the header lacks gx, gy, gz") !=
+          std::string::npos);
+    const std::string only_bad = error_of(write_file(dir, "allbad.csv", "t,ax,ay,az,gx,gy,gz\n0,x,0,0,0,0,0\n"));
+    CHECK(only_bad.find("no accelerometer and gyroscope sample could be read") != std::string::npos);
+    try {
+        read_sensor_file(dir + "/nope.csv");
+        FAIL("no exception");
+    } catch (const ReadError& e) {
+        CHECK(e.path() == dir + "/nope.csv");
+        CHECK(e.line() == 0);
+    }
+}
