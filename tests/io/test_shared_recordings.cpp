@@ -206,3 +206,72 @@ TEST_CASE("merged_records: time order, IMU before MAG at equal time") {
     CHECK(records[0]->struct_size == sizeof(pn_imu_t));
     CHECK(records[1]->struct_size == sizeof(pn_mag_t));
 }
+
+TEST_CASE("biba-chest-xsens mapmatching_run/sensors.csv: the author's conversion of rita_to_kar undone") {
+    if (!have_data("biba-chest-xsens")) return;
+    const SensorLog converted = read_sensor_file(data_dir() + "/biba-chest-xsens/mapmatching_run/sensors.csv");
+    const SensorLog raw = read_sensor_file(data_dir() + "/biba-chest-xsens/rita_to_kar.txt");
+    CHECK(converted.format == "xsens-converted-g-csv");
+    // SOURCE.md: same start tick 303336, same 9 444 samples; a = Acc / 9.70 with x/z swapped, gx = Gyr_Z.
+    REQUIRE(converted.imu.size() == 9444);
+    REQUIRE(raw.imu.size() == 9444);
+    CHECK(converted.imu.front().header.t_ns == 30333600000LL);
+    double worst_a = 0.0, worst_g = 0.0, worst_m = 0.0;
+    for (size_t i = 0; i < raw.imu.size(); ++i) {
+        REQUIRE(converted.imu[i].header.t_ns == raw.imu[i].header.t_ns);
+        for (int k = 0; k < 3; ++k) {
+            worst_a = std::max(worst_a, std::fabs(converted.imu[i].accel_mps2[k] - raw.imu[i].accel_mps2[k]));
+            worst_g = std::max(worst_g, std::fabs(converted.imu[i].gyro_radps[k] - raw.imu[i].gyro_radps[k]));
+            worst_m = std::max(worst_m, std::fabs(converted.mag[i].mag_ut[k] - raw.mag[i].mag_ut[k]));
+        }
+    }
+    CHECK(worst_a < 1e-5);  // the file keeps 9 digits of g
+    CHECK(worst_g < 1e-9);
+    CHECK(worst_m < 1e-9);
+    // p is hPa, 1016.38-1016.55 on a single floor.
+    REQUIRE(converted.baro.size() == 9444);
+    for (const auto& b : converted.baro) {
+        REQUIRE(b.pressure_pa > 101637.0);
+        REQUIRE(b.pressure_pa < 101656.0);
+    }
+    CHECK(stream_of(converted, "pressure").units_found == "hPa");
+    CHECK(stream_of(converted, "accel").units_found == "g");
+}
+
+TEST_CASE("humolire-phone: two-file Android logs, ~418 Hz irregular, folder or either file") {
+    if (!have_data("humolire-phone")) return;
+    struct Case {
+        const char* folder;
+        size_t accel_rows, gyro_rows;
+        double duration_s;
+    };
+    // SOURCE.md: durations 164 / 80 / 81 / 189 s; the streams differ by about 30 samples.
+    const Case cases[] = {{"user1_straight", 68584, 68553, 164.0},
+                          {"user1_8_shape", 33325, 33296, 80.0},
+                          {"user1_square_2x", 33992, 33961, 81.0},
+                          {"user3_forward", 78814, 78783, 189.0}};
+    for (const Case& c : cases) {
+        CAPTURE(c.folder);
+        const std::string dir = data_dir() + "/humolire-phone/" + c.folder;
+        const SensorLog log = read_sensor_file(dir);
+        CHECK(log.format == "humolire-senslogs");
+        const StreamInfo& accel = stream_of(log, "accel");
+        const StreamInfo& gyro = stream_of(log, "gyro");
+        CHECK(accel.count == c.accel_rows);
+        CHECK(gyro.count == c.gyro_rows);
+        CHECK(accel.count - gyro.count == doctest::Approx(30).epsilon(0.2));
+        CHECK(accel.rate_hz == doctest::Approx(418.0).epsilon(0.005));  // "frequency": 418.0
+        CHECK(accel.median_rate_hz == doctest::Approx(500.0).epsilon(0.01));  // median dt 2.0 ms
+        CHECK(accel.duration_s == doctest::Approx(c.duration_s).epsilon(0.01));
+        CHECK(log.imu.size() > c.gyro_rows - 5);  // paired on the accelerometer times within the gyro span
+        CHECK(log.mag.empty());  // no magnetometer, no barometer
+        CHECK(log.baro.empty());
+        double a0[3];
+        mean_accel(log, 200, a0);
+        CHECK(norm3(a0) == doctest::Approx(9.81).epsilon(0.05));  // m/s^2
+        // Either file gives the same recording.
+        const SensorLog via_gyro = read_sensor_file(dir + "/gyroscope-calibrated.txt");
+        CHECK(via_gyro.imu.size() == log.imu.size());
+        CHECK(via_gyro.imu.back().header.t_ns == log.imu.back().header.t_ns);
+    }
+}

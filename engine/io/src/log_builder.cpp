@@ -59,7 +59,7 @@ void LogBuilder::note(const std::string& text) { log_.notes.push_back(text); }
 
 void LogBuilder::issue(size_t line, const std::string& message) {
     if (log_.issues.size() < options_.max_issues) {
-        log_.issues.push_back({line, message});
+        log_.issues.push_back({line, context_.empty() ? message : context_ + ": " + message});
     } else {
         ++log_.issues_not_listed;
     }
@@ -113,6 +113,7 @@ void LogBuilder::add_accel(size_t line, double t_s, const double a[3]) {
     accel_raw_.push_back({seconds_to_ns(t_s), {a[0], a[1], a[2]}});
     times_[kAccel].push_back(t_s);
     lines_[kAccel].push_back(line);
+    stream_context_[kAccel] = context_;
 }
 
 void LogBuilder::add_gyro(size_t line, double t_s, const double g[3]) {
@@ -120,6 +121,7 @@ void LogBuilder::add_gyro(size_t line, double t_s, const double g[3]) {
     gyro_raw_.push_back({seconds_to_ns(t_s), {g[0], g[1], g[2]}});
     times_[kGyro].push_back(t_s);
     lines_[kGyro].push_back(line);
+    stream_context_[kGyro] = context_;
 }
 
 void LogBuilder::add_mag(size_t line, double t_s, const double m[3]) {
@@ -190,6 +192,7 @@ void LogBuilder::pair_accel_gyro() {
 }
 
 void LogBuilder::report_gaps(StreamId stream, const char* label) {
+    context_ = stream_context_[stream];
     const auto& t = times_[stream];
     for (size_t i = 1; i < t.size(); ++i) {
         const double dt = t[i] - t[i - 1];
@@ -251,6 +254,7 @@ void LogBuilder::check_units() {
 }
 
 void LogBuilder::finish() {
+    context_.clear();
     pair_accel_gyro();
     if (log_.imu.empty()) {
         throw ReadError(log_.path, 0, "no accelerometer and gyroscope sample could be read");
@@ -271,6 +275,7 @@ void LogBuilder::finish() {
     report_gaps(kMag, "mag");
     report_gaps(kPressure, "pressure");
     report_gaps(kGnss, "gnss");
+    context_.clear();
     check_units();
 
     log_.streams.clear();

@@ -34,6 +34,8 @@ public:
     LogBuilder(SensorLog& log, const ReadOptions& options);
 
     void note(const std::string& text);
+    // Prefix for issue messages while reading one file of a multi-file recording.
+    void set_context(const std::string& context) { context_ = context; }
     void issue(size_t line, const std::string& message);
     // The row (or sample) is skipped; counted as a bad row of every stream in `streams`.
     void bad_row(size_t line, const std::string& message, unsigned streams);
@@ -67,6 +69,8 @@ private:
     void check_units();
 
     SensorLog& log_;
+    std::string context_;
+    std::string stream_context_[kStreamCount];  // context_ when the stream's samples were added
     ReadOptions options_;
     std::vector<double> times_[kStreamCount];
     std::vector<size_t> lines_[kStreamCount];

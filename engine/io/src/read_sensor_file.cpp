@@ -84,6 +84,9 @@ size_t first_content_line(const TextFile& file) {
 const std::vector<FormatReader>& format_readers() {
     // Detection order: the most specific header first.
     static const std::vector<FormatReader> readers = {
+        {"ipin-logfile", "IPIN competition logfile (ACCE;GYRO;MAGN;PRES;GNSS;POSI lines)", detect_ipin, read_ipin},
+        {"humolire-senslogs", "senslogs two-file Android log (accelerometer/gyroscope .txt)", detect_humolire,
+         read_humolire},
                         {"microstrain-sensorconnect-a", "MicroStrain SensorConnect CSV, scaled* channels (g, rad/s, gauss)",
          detect_microstrain_a, read_microstrain},
         {"microstrain-sensorconnect-b", "MicroStrain SensorConnect CSV, estCompensated* channels (m/s^2, rad/s)",
@@ -92,8 +95,12 @@ const std::vector<FormatReader>& format_readers() {
         {"xsens-mtw-tsv", "Xsens tab-separated export (PacketCounter, Acc_X, ...)", detect_xsens_mtw_tsv, read_xsens},
         {"xsens-mtmanager-csv", "Xsens MT Manager CSV export (PacketCounter, SampleTimeFine, Acc_X, ...)",
          detect_xsens_mtmanager_csv, read_xsens},
-                {"pednav-csv", "canonical CSV t,ax,ay,az,gx,gy,gz[,mx,my,mz][,p] in s, m/s^2, rad/s, uT, Pa",
+                {"xsens-converted-g-csv", "Xsens export converted to time,gx..,ax.. in g, p in hPa (biba mapmatching_run)",
+         detect_biba_converted_csv, read_biba_converted_csv},
+        {"pednav-csv", "canonical CSV t,ax,ay,az,gx,gy,gz[,mx,my,mz][,p] in s, m/s^2, rad/s, uT, Pa",
          detect_pednav_csv, read_pednav_csv},
+        {"column-map", "any delimited file described by a column map (ReadOptions::column_map)", nullptr,
+         read_column_map},
             };
     return readers;
 }
