@@ -26,12 +26,40 @@ public:
 
     FootEkf15(Params& p, const CreateContext&) : ins_(read(p)) {}
 
-    void on_imu(const pn_imu_t& imu) override { imu_ = imu; }
+    // A sample is processed once its attitude and its gait phase are both in,
+    // whichever comes first in the batch; without a gait phase for it (no
+    // step detector), when the next sample's IMU record arrives or at flush.
+    void on_imu(const pn_imu_t& imu) override {
+        if (pending_ && att_.header.t_ns < imu.header.t_ns) process(att_);
+        imu_ = imu;
+    }
     void on_gait_phase(const pn_gait_phase_t& g) override {
         gait_t_ = g.header.t_ns;
         stance_ = g.stance != 0;
+        if (pending_ && att_.header.t_ns == gait_t_) process(att_);
     }
     void on_attitude(const pn_attitude_t& att) override {
+        if (pending_) process(att_);
+        if (gait_t_ == att.header.t_ns) {
+            process(att);
+        } else {
+            att_ = att;
+            pending_ = true;
+        }
+    }
+    void on_flush() override {
+        if (pending_) process(att_);
+        pednav::foot::StrideOut s;
+        if (ins_.finish(s)) emit_stride(s);
+    }
+    bool set_start(const double pos[3], double heading_rad) override {
+        ins_.set_start(Vec3(pos[0], pos[1], pos[2]), heading_rad);
+        return true;
+    }
+
+private:
+    void process(const pn_attitude_t& att) {
+        pending_ = false;
         const int64_t t = att.header.t_ns;
         const Vec3 a(imu_.accel_mps2[0], imu_.accel_mps2[1], imu_.accel_mps2[2]);
         const Vec3 w(imu_.gyro_radps[0], imu_.gyro_radps[1], imu_.gyro_radps[2]);
@@ -62,16 +90,6 @@ public:
             emit(c);
         }
     }
-    void on_flush() override {
-        pednav::foot::StrideOut s;
-        if (ins_.finish(s)) emit_stride(s);
-    }
-    bool set_start(const double pos[3], double heading_rad) override {
-        ins_.set_start(Vec3(pos[0], pos[1], pos[2]), heading_rad);
-        return true;
-    }
-
-private:
     void emit_stride(const pednav::foot::StrideOut& s) {
         auto r = make_record<pn_stride_t>(s.t_end_ns);
         r.t_start_ns = s.t_start_ns;
@@ -114,6 +132,8 @@ private:
     pednav::foot::FootIns ins_;
     pednav::foot::SampleOut out_;
     pn_imu_t imu_{};
+    pn_attitude_t att_{};
+    bool pending_ = false;
     int64_t gait_t_ = INT64_MIN;
     bool stance_ = false;
 };

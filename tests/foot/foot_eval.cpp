@@ -1,0 +1,193 @@
+#include "foot_eval.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <pednav_io/sensor_log.hpp>
+
+namespace pednav::foot_eval {
+
+namespace {
+nlohmann::json load_json(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("cannot open " + path);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    std::string text = ss.str();
+    // The ipol metadata writes a missing height as a bare NaN.
+    for (size_t p = text.find("NaN"); p != std::string::npos; p = text.find("NaN", p)) text.replace(p, 3, "null");
+    return nlohmann::json::parse(text);
+}
+double hypot2(const double* a, const double* b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
+}  // namespace
+
+std::string data_dir() { return PEDNAV_SHARED_DATA_DIR; }
+
+std::string foot_config(const nlohmann::json& patch, double imu_rate_hz) {
+    nlohmann::json doc = load_json(std::string(PEDNAV_SOURCE_DIR) + "/configs/foot.json");
+    // Another detector plugin starts from its own defaults, not the preset's params.
+    const nlohmann::json::json_pointer det("/pipelines/foot/step_detector");
+    if (patch.contains(det / "plugin") && patch[det / "plugin"] != doc[det / "plugin"])
+        doc[det / "params"] = nlohmann::json::object();
+    doc.merge_patch(patch);
+    doc["imu_rate_hz"] = imu_rate_hz;
+    return doc.dump();
+}
+
+nlohmann::json detector_patch(const std::string& which) {
+    nlohmann::json p = nlohmann::json::object();
+    if (which == "multicondition") {
+        p["pipelines"]["foot"]["step_detector"] = {{"plugin", "org.pednav.foot.stance.multicondition"},
+                                                   {"params", nlohmann::json::object()}};
+    }
+    return p;
+}
+
+nlohmann::json ekf_patch(const nlohmann::json& params) {
+    nlohmann::json p;
+    p["pipelines"]["foot"]["position_filter"]["params"] = params;
+    return p;
+}
+
+ReplayResult run_file(const std::string& path, const std::string& config_json, double* rate_hz) {
+    const io::SensorLog log = io::read_sensor_file(path);
+    auto doc = nlohmann::json::parse(config_json);
+    const io::StreamInfo* s = log.stream("accel");
+    const double rate = s ? s->median_rate_hz : 0.0;
+    if (rate_hz) *rate_hz = rate;
+    doc["imu_rate_hz"] = rate;
+    ReplayOptions o;
+    o.config_json = doc.dump();
+    o.plugin_dirs = {PEDNAV_PLUGIN_OUTPUT_DIR};
+    ReplayResult r = replay(o, io::merged_records(log));
+    if (!r.error.empty()) throw std::runtime_error(path + ": " + r.error);
+    return r;
+}
+
+Stats stats_of(const std::vector<double>& v) {
+    Stats s;
+    s.n = v.size();
+    if (v.empty()) return s;
+    s.min = *std::min_element(v.begin(), v.end());
+    s.max = *std::max_element(v.begin(), v.end());
+    double sum = 0;
+    for (double x : v) sum += x;
+    s.mean = sum / v.size();
+    double ss = 0;
+    for (double x : v) ss += (x - s.mean) * (x - s.mean);
+    s.sd = v.size() > 1 ? std::sqrt(ss / (v.size() - 1)) : 0.0;
+    s.final = v.back();
+    return s;
+}
+
+const pn_position_t& position_at(const ReplayResult& r, double t_s) {
+    if (r.positions.empty()) throw std::runtime_error("no positions");
+    const int64_t t = static_cast<int64_t>(std::llround(t_s * 1e9));
+    auto it = std::upper_bound(r.positions.begin(), r.positions.end(), t,
+                               [](int64_t v, const pn_position_t& p) { return v < p.header.t_ns; });
+    if (it == r.positions.begin()) return r.positions.front();
+    return *(it - 1);
+}
+
+double stride_path_m(const ReplayResult& r) {
+    double d = 0;
+    for (const auto& s : r.strides) d += s.length_m;
+    return d;
+}
+
+XioScore score_xio(const std::string& name, const std::string& config_json) {
+    XioScore sc;
+    sc.name = name;
+    const ReplayResult r = run_file(data_dir() + "/xio-gait-ngimu/" + name + ".csv", config_json);
+    if (r.positions.empty()) throw std::runtime_error("xio " + name + ": no positions");
+    const auto& a = r.positions.front();
+    const auto& b = r.positions.back();
+    sc.closure_h_m = hypot2(a.pos_enu_m, b.pos_enu_m);
+    sc.closure_m = std::hypot(sc.closure_h_m, b.pos_enu_m[2] - a.pos_enu_m[2]);
+    sc.distance_m = stride_path_m(r);
+    sc.closure_pct = sc.distance_m > 0 ? 100.0 * sc.closure_m / sc.distance_m : 100.0;
+    sc.strides = r.strides.size();
+    return sc;
+}
+
+KorogluScore score_koroglu(int n, const std::string& config_json) {
+    KorogluScore sc;
+    sc.name = "SensorConnectData_" + std::to_string(n);
+    const std::string base = data_dir() + "/koroglu-foot-gcp/" + sc.name;
+    // Ground truth: stride_number, gcp_x_m, gcp_y_m, stride_index_200Hz, timestamp_s.
+    std::ifstream f(base + "_gcp.csv");
+    if (!f) throw std::runtime_error("cannot open " + base + "_gcp.csv");
+    std::string line;
+    std::vector<double> gx, gy, gt;
+    while (std::getline(f, line)) {
+        if (line.empty() || line[0] == '#' || line[0] == 's') continue;
+        std::stringstream ss(line);
+        std::string cell;
+        std::vector<double> v;
+        while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+        if (v.size() < 5) continue;
+        gx.push_back(v[1]);
+        gy.push_back(v[2]);
+        gt.push_back(v[4]);
+    }
+    sc.footprints = gx.size() - 1;
+    for (size_t i = 1; i < gx.size(); ++i) sc.path_m += std::hypot(gx[i] - gx[i - 1], gy[i] - gy[i - 1]);
+
+    const ReplayResult r = run_file(base + ".csv", config_json);
+    sc.strides = r.strides.size();
+    // Estimated footprint: the position at the end of each annotated stance,
+    // relative to the one of stride 0.
+    std::vector<double> ex, ey;
+    for (size_t i = 0; i < gt.size(); ++i) {
+        const auto& p = position_at(r, gt[i]);
+        ex.push_back(p.pos_enu_m[0]);
+        ey.push_back(p.pos_enu_m[1]);
+    }
+    const double x0 = ex[0], y0 = ey[0];
+    for (size_t i = 0; i < ex.size(); ++i) {
+        ex[i] -= x0;
+        ey[i] -= y0;
+    }
+    // One rotation fitted on the first 5 strides (footprints 0..5), least squares.
+    double sdot = 0, scross = 0;
+    for (size_t i = 1; i <= std::min<size_t>(5, ex.size() - 1); ++i) {
+        sdot += ex[i] * gx[i] + ey[i] * gy[i];
+        scross += ex[i] * gy[i] - ey[i] * gx[i];
+    }
+    const double ang = std::atan2(scross, sdot), c = std::cos(ang), s = std::sin(ang);
+    std::vector<double> err;
+    for (size_t i = 0; i < ex.size(); ++i) {
+        const double x = c * ex[i] - s * ey[i], y = s * ex[i] + c * ey[i];
+        sc.dx.push_back(x - gx[i]);
+        sc.dy.push_back(y - gy[i]);
+        err.push_back(std::hypot(x - gx[i], y - gy[i]));
+    }
+    sc.err_m = stats_of(err);
+    sc.mean_pct = 100.0 * sc.err_m.mean / sc.path_m;
+    return sc;
+}
+
+IpolScore score_ipol(const std::string& trial, const std::string& foot, const std::string& config_json) {
+    IpolScore sc;
+    sc.name = trial + "_" + foot;
+    const std::string base = data_dir() + "/ipol-gait-waist-feet/" + trial;
+    const nlohmann::json meta = load_json(base + ".json");
+    const ReplayResult r = run_file(base + "_" + foot + ".txt", config_json);
+    const double rate = 100.0;
+    const auto tb = meta.at("TrialBoundaries");
+    const auto ub = meta.at("UTurnBoundaries");
+    const auto& p0 = position_at(r, tb[0].get<double>() / rate);
+    const auto& p1 = position_at(r, ub[0].get<double>() / rate);
+    const auto& p2 = position_at(r, ub[1].get<double>() / rate);
+    const auto& p3 = position_at(r, tb[1].get<double>() / rate);
+    sc.leg_out_m = hypot2(p0.pos_enu_m, p1.pos_enu_m);
+    sc.leg_back_m = hypot2(p2.pos_enu_m, p3.pos_enu_m);
+    sc.strides = r.strides.size();
+    sc.footsteps = meta.at(foot == "lf" ? "LeftFootEvents" : "RightFootEvents").size();
+    return sc;
+}
+
+}  // namespace pednav::foot_eval

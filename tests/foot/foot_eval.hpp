@@ -1,0 +1,65 @@
+// Accuracy evaluation of the foot pipeline on the shared recordings and on
+// simulated walks, through the real engine and plugin loader (pednav::replay).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <pednav_engine/replay.hpp>
+
+namespace pednav::foot_eval {
+
+// configs/foot.json with `patch` merged in (RFC 7386 merge patch), and the
+// nominal IMU rate set.
+std::string foot_config(const nlohmann::json& patch, double imu_rate_hz);
+// The patch that selects a stance detector ("shoe" or "multicondition").
+nlohmann::json detector_patch(const std::string& which);
+// Merge patch for the position filter's params.
+nlohmann::json ekf_patch(const nlohmann::json& params);
+
+std::string data_dir();
+
+// Reads a recording and replays it through the engine.
+ReplayResult run_file(const std::string& path, const std::string& config_json, double* rate_hz = nullptr);
+
+struct Stats {
+    double mean = 0, max = 0, final = 0, sd = 0, min = 0;
+    size_t n = 0;
+};
+Stats stats_of(const std::vector<double>& v);
+
+// Position at time t (the last output at or before t).
+const pn_position_t& position_at(const ReplayResult& r, double t_s);
+// Horizontal length of the path through the stride end points.
+double stride_path_m(const ReplayResult& r);
+
+struct XioScore {
+    std::string name;
+    double distance_m = 0;     // walked (sum of stride lengths)
+    double closure_m = 0;      // 3-D distance between start and end
+    double closure_h_m = 0;    // horizontal
+    double closure_pct = 0;    // closure_m / distance_m * 100
+    size_t strides = 0;
+};
+XioScore score_xio(const std::string& name, const std::string& config_json);
+
+struct KorogluScore {
+    std::string name;
+    size_t strides = 0;
+    size_t footprints = 0;     // GCP rows - 1 (strides of the ground truth)
+    double path_m = 0;         // GCP path length
+    Stats err_m;               // horizontal error at each footprint (after the 5-stride rotation fit)
+    double mean_pct = 0;       // err.mean / path * 100
+    std::vector<double> dx, dy;  // signed errors per footprint (for the paper's tables)
+};
+KorogluScore score_koroglu(int n, const std::string& config_json);
+
+struct IpolScore {
+    std::string name;
+    double leg_out_m = 0, leg_back_m = 0;
+    size_t strides = 0, footsteps = 0;
+};
+IpolScore score_ipol(const std::string& trial, const std::string& foot, const std::string& config_json);
+
+}  // namespace pednav::foot_eval

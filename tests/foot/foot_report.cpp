@@ -1,0 +1,39 @@
+// Prints the foot pipeline's accuracy on every shared foot recording, for
+// docs/foot-pipeline.md. Usage: foot_report [shoe|multicondition] [json merge patch]
+#include <cstdio>
+#include <string>
+
+#include "foot_eval.hpp"
+
+using namespace pednav::foot_eval;
+
+int main(int argc, char** argv) {
+    const std::string det = argc > 1 ? argv[1] : "shoe";
+    nlohmann::json patch = detector_patch(det);
+    if (argc > 2) patch.merge_patch(nlohmann::json::parse(argv[2]));
+    const std::string cfg = foot_config(patch, 0.0);
+    try {
+        std::printf("detector %s\n", det.c_str());
+        for (const char* w : {"short_walk", "long_walk"}) {
+            const XioScore s = score_xio(w, cfg);
+            std::printf("xio %-11s strides %3zu  walked %6.2f m  closure %.3f m (h %.3f)  %.2f %%\n", w, s.strides,
+                        s.distance_m, s.closure_m, s.closure_h_m, s.closure_pct);
+        }
+        for (int n : {33, 35, 39, 42, 44}) {
+            const KorogluScore s = score_koroglu(n, cfg);
+            std::printf("koroglu %d strides %3zu/%3zu  path %6.1f m  mean %.3f max %.3f final %.3f m  mean %.2f %%\n", n,
+                        s.strides, s.footprints, s.path_m, s.err_m.mean, s.err_m.max, s.err_m.final, s.mean_pct);
+        }
+        for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
+            for (const char* f : {"lf", "rf"}) {
+                const IpolScore s = score_ipol(t, f, cfg);
+                std::printf("ipol %-4s %s strides %2zu/%2zu  out %6.2f m  back %6.2f m\n", t, f, s.strides, s.footsteps,
+                            s.leg_out_m, s.leg_back_m);
+            }
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
