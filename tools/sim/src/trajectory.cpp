@@ -1,0 +1,44 @@
+#include "trajectory.hpp"
+
+#include <stdexcept>
+
+#include "body_kinematics.hpp"
+#include "foot_kinematics.hpp"
+
+namespace pednav::sim::detail {
+
+namespace {
+
+class FootTrajectory : public Trajectory {
+public:
+    explicit FootTrajectory(const GaitPlan& plan) : steps_(plan.landing_s), kin_(plan) {}
+    KinState at(double t_s) override { return kin_.at(t_s); }
+    double height_above_floor_m() const override { return 0.0; }
+    std::vector<double> step_times_s() const override { return steps_; }
+
+private:
+    std::vector<double> steps_;
+    FootKinematics kin_;
+};
+
+class BodyTrajectory : public Trajectory {
+public:
+    BodyTrajectory(const GaitPlan& plan, const Route& route, const BodyShape& shape) : kin_(plan, route, shape) {}
+    KinState at(double t_s) override { return kin_.at(t_s); }
+    double height_above_floor_m() const override { return kin_.shape().height_m; }
+    std::vector<double> step_times_s() const override { return kin_.step_times_s(); }
+
+private:
+    BodyKinematics kin_;
+};
+
+}  // namespace
+
+std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan, const Route& route) {
+    if (mount == "foot") return std::make_unique<FootTrajectory>(plan);
+    if (mount == "chest") return std::make_unique<BodyTrajectory>(plan, route, BodyShape::chest());
+    if (mount == "waist") return std::make_unique<BodyTrajectory>(plan, route, BodyShape::waist());
+    throw std::runtime_error("sim: unknown mount '" + mount + "' (foot, chest or waist)");
+}
+
+}  // namespace pednav::sim::detail
