@@ -145,14 +145,16 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
                       ", expected at least " + std::to_string(min_record_size(r->type)));
         return PN_E_INVALID_ARGUMENT;
     }
+    const std::string bad = check_record_values(r);
+    const bool in_order = r->t_ns >= last_any_t_ns_ && r->t_ns > last_t_ns_[r->type];
+    if (bad.empty() && in_order) return PN_OK;
     char at[64];
     std::snprintf(at, sizeof at, " at t=%.6f s", static_cast<double>(r->t_ns) * 1e-9);
-    const std::string bad = check_record_values(r);
     if (!bad.empty()) {
         set_error(err, PN_E_NUMERIC, "input", std::string(record_type_name(r->type)) + " sample" + at + ": " + bad);
         return PN_E_NUMERIC;
     }
-    if (r->t_ns < last_any_t_ns_ || r->t_ns <= last_t_ns_[r->type]) {
+    {
         const int64_t prev = std::max(last_any_t_ns_, last_t_ns_[r->type]);
         char msg[160];
         std::snprintf(msg, sizeof msg, "%s sample%s is not after the previous sample at t=%.6f s",
@@ -164,6 +166,7 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
 }
 
 pn_status_t Engine::stage_failure_status(pn_error_t* err) {
+    if (!scheduler_->has_failure()) return PN_OK;
     StageFailure f = scheduler_->take_failure();
     if (f.status == PN_OK) return PN_OK;
     log(PNP_LOG_ERROR, f.where.c_str(), f.message.c_str());

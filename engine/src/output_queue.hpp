@@ -17,9 +17,11 @@ class OutputQueue {
 public:
     explicit OutputQueue(size_t capacity) : slots_(capacity ? capacity : 8192) {}
 
-    void push(const pn_record_header_t* r) {
+    // Copies the record, stamping its header's source_id.
+    void push(const pn_record_header_t* r, uint32_t source_id) {
         if (r->type < PN_REC_TYPE_COUNT) {
             std::memcpy(latest_[r->type].bytes, r, r->struct_size);
+            latest_[r->type].header.source_id = source_id;
             has_latest_[r->type] = true;
         }
         const uint64_t tail = tail_.load(std::memory_order_relaxed);
@@ -27,7 +29,9 @@ public:
             ++dropped_;
             return;
         }
-        std::memcpy(slots_[tail % slots_.size()].bytes, r, r->struct_size);
+        pn_output_t& slot = slots_[tail % slots_.size()];
+        std::memcpy(slot.bytes, r, r->struct_size);
+        slot.header.source_id = source_id;
         tail_.store(tail + 1, std::memory_order_release);
     }
     bool pop(pn_output_t* out) {

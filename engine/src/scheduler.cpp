@@ -130,12 +130,7 @@ pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
         auto* stored = const_cast<pn_record_header_t*>(queues_[q].at(queues_[q].end() - 1));
         stored->source_id = static_cast<uint32_t>(q);
     }
-    if (final_producer_mask_[s.index] & output_mask_ & bit) {
-        pn_output_t out;
-        std::memcpy(&out, r, r->struct_size);
-        out.header.source_id = static_cast<uint32_t>(q);
-        outputs_.push(&out.header);
-    }
+    if (final_producer_mask_[s.index] & output_mask_ & bit) outputs_.push(r, static_cast<uint32_t>(q));
     ++s.records_out;
     return PN_OK;
 }
@@ -272,36 +267,43 @@ void Scheduler::report_failure(Stage& s, pn_status_t status, const pn_error_t& e
 }
 
 void Scheduler::drain() {
-    const size_t n = stages_.size();
-    int64_t next_t[8];
+    if (!stages_.empty()) drain_from(0, app_limit_ns_);
+    if ((++drains_ & 63) == 0 || app_limit_ns_ == kInf) release_consumed();
+}
+
+// Depth first: before stage k takes its next record, every stage below it
+// consumes what has become available to it. So a stage consumes sample n
+// before any zero-latency stage above it sees sample n+1, and feedback sent
+// up while processing sample n is delivered before the receiver's next record.
+void Scheduler::drain_from(size_t k, int64_t limit) {
+    Stage& s = *stages_[k];
+    const bool last = k + 1 == stages_.size();
     for (;;) {
-        // Compute each stage's read limit from the look-ahead of those above.
-        int64_t limit = app_limit_ns_;
-        for (size_t k = 0; k < n; ++k) {
-            Stage& s = *stages_[k];
-            next_t[k] = peek(s, limit);
+        const bool had_feedback = !s.feedback.empty() && deliver_feedback(s);
+        const int64_t t = peek(s, limit);
+        if (!last) {
             // A zero-latency (or flushed) stage has emitted everything about
             // the times before its next input; a stage with look-ahead L only
             // what is about its newest consumed input time minus L.
-            if (s.flushed || s.latency_ns == 0)
-                limit = next_t[k] == kInf ? limit : next_t[k] - 1;
-            else
-                limit = saturating_sub(s.last_input_t_ns, s.latency_ns);
+            const int64_t below = (s.flushed || s.latency_ns == 0) ? (t == kInf ? limit : t - 1)
+                                                                   : saturating_sub(s.last_input_t_ns, s.latency_ns);
+            drain_from(k + 1, below);
         }
-        // Deepest stage with work first: lock-step through the pipeline.
-        bool progressed = false;
-        for (size_t k = n; k-- > 0 && !progressed;) {
-            Stage& s = *stages_[k];
-            if (!s.feedback.empty() && deliver_feedback(s)) {
-                progressed = true;
-            } else if (next_t[k] != kInf) {
-                deliver_forward(s, next_t[k]);
-                progressed = true;
-            }
+        if (t == kInf) {
+            if (had_feedback || has_feedback(s)) continue;
+            return;
         }
-        if (!progressed) break;
+        deliver_forward(s, t);
     }
-    release_consumed();
+}
+
+bool Scheduler::has_feedback(const Stage& s) const {
+    for (const auto& in : s.feedback) {
+        const RecordQueue& q = queues_[in.queue];
+        for (RecordQueue::Seq c = in.cursor; c < q.end(); ++c)
+            if (in.mask & PN_REC_MASK(q.at(c)->type)) return true;
+    }
+    return false;
 }
 
 void Scheduler::release_consumed() {

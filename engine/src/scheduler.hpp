@@ -93,6 +93,7 @@ public:
 
     // The first stage failure since the last call, and clears it.
     StageFailure take_failure();
+    bool has_failure() const { return failure_.status != PN_OK; }
 
     void set_output_mask(uint64_t mask) { output_mask_ = mask; }
     uint64_t output_mask() const { return output_mask_; }
@@ -111,6 +112,8 @@ public:
 private:
     void wire();
     void drain();
+    void drain_from(size_t k, int64_t limit);
+    bool has_feedback(const Stage& s) const;
     // Next forward record time for stage k within `limit`, INT64_MAX if none.
     int64_t peek(Stage& s, int64_t limit);
     bool deliver_feedback(Stage& s);
@@ -128,6 +131,7 @@ private:
     int64_t app_limit_ns_ = INT64_MIN;     // app records up to here are released
     int64_t last_app_t_ns_ = INT64_MIN;
     uint64_t records_in_ = 0;
+    uint64_t drains_ = 0;
     StageFailure failure_;
     std::vector<std::string> warnings_;
     uint64_t warning_count_ = 0;
