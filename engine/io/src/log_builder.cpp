@@ -289,6 +289,10 @@ void LogBuilder::finish() {
         info.units_found = units_found_[s];
         info.units_converted = units_converted_[s];
         info.bad_rows = bad_[s];
+        if (!t.empty()) {
+            info.t_first_s = t.front();
+            info.t_last_s = t.back();
+        }
         if (t.size() >= 2) {
             info.duration_s = t.back() - t.front();
             if (info.duration_s > 0) info.rate_hz = static_cast<double>(t.size() - 1) / info.duration_s;

@@ -3,11 +3,14 @@
 // Local tangent plane: exact enough for the few kilometres of a walk.
 #pragma once
 
+#include <cstdint>
+
 namespace pednav::io {
 
 struct Origin {
     double lat_deg = 0.0, lon_deg = 0.0, height_m = 0.0;
     bool known = false;
+    int64_t utc_ns_at_zero = 0;  // UTC (ns since 1970) of t_ns = 0 when known, else 0; GPX writes <time> then
 };
 
 // Latitude/longitude/height to east/north/up metres from `origin`.

@@ -30,6 +30,8 @@ struct StreamInfo {
     double rate_hz = 0.0;      // mean rate: (count - 1) / duration_s
     double median_rate_hz = 0.0;  // 1 / median interval: the sensor's own rate when samples were lost
     double duration_s = 0.0;   // last sample time - first sample time
+    double t_first_s = 0.0;    // time of the first sample kept (file's own time origin)
+    double t_last_s = 0.0;     // time of the last sample kept
     std::string units_found;   // unit in the file, e.g. "g", "deg/s", "gauss", "hPa"
     std::string units_converted;  // unit handed to the engine, e.g. "m/s^2"
     size_t gaps = 0;           // intervals longer than ReadOptions::gap_s

@@ -1,0 +1,92 @@
+// JSON of an input (pednav inspect --json, the "input" of a run summary) and
+// the run summary. Keys are listed in docs/formats.md; only additions allowed.
+#include <cmath>
+#include <set>
+
+#include "pednav_io/writers.hpp"
+
+namespace pednav::io {
+
+nlohmann::json sensor_log_json(const SensorLog& log) {
+    using nlohmann::json;
+    json streams = json::array();
+    for (const auto& s : log.streams) {
+        streams.push_back({{"name", s.name},
+                           {"count", s.count},
+                           {"rate_hz", s.rate_hz},
+                           {"median_rate_hz", s.median_rate_hz},
+                           {"duration_s", s.duration_s},
+                           {"t_first_s", s.t_first_s},
+                           {"t_last_s", s.t_last_s},
+                           {"units_found", s.units_found},
+                           {"units_converted", s.units_converted},
+                           {"gaps", s.gaps},
+                           {"bad_rows", s.bad_rows}});
+    }
+    json issues = json::array();
+    for (const auto& i : log.issues) issues.push_back({{"line", i.line}, {"message", i.message}});
+    json truth_origin = nullptr;
+    if (log.truth_origin.known) {
+        truth_origin = {{"lat_deg", log.truth_origin.lat_deg}, {"lon_deg", log.truth_origin.lon_deg}};
+    }
+    return {{"path", log.path},
+            {"format", log.format},
+            {"axes", log.axes},
+            {"records", {{"imu", log.imu.size()},
+                         {"mag", log.mag.size()},
+                         {"baro", log.baro.size()},
+                         {"gnss", log.gnss.size()},
+                         {"truth", log.truth.size()}}},
+            {"streams", streams},
+            {"truth_origin", truth_origin},
+            {"issues", issues},
+            {"issues_not_listed", log.issues_not_listed},
+            {"notes", log.notes}};
+}
+
+nlohmann::json run_summary_json(const SensorLog& input, const std::string& describe_json,
+                                const std::vector<pn_position_t>& positions, const std::vector<pn_stride_t>& strides,
+                                const std::vector<std::string>& warnings) {
+    using nlohmann::json;
+    json describe = describe_json.empty() ? json(nullptr) : json::parse(describe_json, nullptr, false);
+    if (describe.is_discarded()) describe = json(describe_json);
+
+    double stride_distance_m = 0.0;
+    for (const auto& s : strides) stride_distance_m += s.length_m;
+    double track_length_m = 0.0;
+    for (size_t i = 1; i < positions.size(); ++i) {
+        track_length_m += std::hypot(positions[i].pos_enu_m[0] - positions[i - 1].pos_enu_m[0],
+                                     positions[i].pos_enu_m[1] - positions[i - 1].pos_enu_m[1]);
+    }
+    std::set<int> floors;
+    for (const auto& p : positions) {
+        if (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) floors.insert(p.floor);
+    }
+    json final_position = nullptr;
+    double duration_s = 0.0;
+    if (!positions.empty()) {
+        const auto& last = positions.back();
+        final_position = {last.pos_enu_m[0], last.pos_enu_m[1], last.pos_enu_m[2]};
+        duration_s = static_cast<double>(last.header.t_ns - positions.front().header.t_ns) * 1e-9;
+    }
+    json summary = {
+        {"format", "pednav-run-summary/1"},
+        {"input", sensor_log_json(input)},
+        {"engine", describe.is_object() && describe.contains("engine") ? describe["engine"] : json(nullptr)},
+        {"pipeline", describe.is_object() && describe.contains("pipeline") ? describe["pipeline"] : describe},
+        {"samples",
+         {{"imu", input.imu.size()}, {"mag", input.mag.size()}, {"baro", input.baro.size()}, {"gnss", input.gnss.size()}}},
+        {"positions", positions.size()},
+        {"steps", strides.size()},
+        {"distance_m", stride_distance_m},
+        {"track_length_m", track_length_m},
+        {"duration_s", duration_s},
+        {"final_position_enu_m", final_position},
+        {"floors", floors},
+        {"warnings", warnings},
+    };
+    if (describe.is_object() && describe.contains("counters")) summary["counters"] = describe["counters"];
+    return summary;
+}
+
+}  // namespace pednav::io
