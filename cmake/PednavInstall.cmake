@@ -1,0 +1,34 @@
+# Installs the CMake package (find_package(pednav)) and the pkg-config file.
+# Included at the end of the top-level CMakeLists.txt, once every exported
+# target exists.
+include(CMakePackageConfigHelpers)
+
+set(PEDNAV_CMAKE_INSTALL_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/pednav")
+
+# pednav_abi -> pednav::abi, pednav_sdk -> pednav::sdk, pednav -> pednav::pednav.
+set_target_properties(pednav_abi PROPERTIES EXPORT_NAME abi)
+set_target_properties(pednav_sdk PROPERTIES EXPORT_NAME sdk)
+
+install(EXPORT pednavTargets
+  NAMESPACE pednav::
+  DESTINATION "${PEDNAV_CMAKE_INSTALL_DIR}")
+
+configure_package_config_file(
+  "${CMAKE_CURRENT_LIST_DIR}/pednavConfig.cmake.in"
+  "${CMAKE_CURRENT_BINARY_DIR}/pednavConfig.cmake"
+  INSTALL_DESTINATION "${PEDNAV_CMAKE_INSTALL_DIR}"
+  PATH_VARS CMAKE_INSTALL_INCLUDEDIR PEDNAV_PLUGIN_INSTALL_DIR)
+write_basic_package_version_file(
+  "${CMAKE_CURRENT_BINARY_DIR}/pednavConfigVersion.cmake"
+  VERSION "${PROJECT_VERSION}"
+  COMPATIBILITY SameMajorVersion)
+install(FILES
+  "${CMAKE_CURRENT_BINARY_DIR}/pednavConfig.cmake"
+  "${CMAKE_CURRENT_BINARY_DIR}/pednavConfigVersion.cmake"
+  DESTINATION "${PEDNAV_CMAKE_INSTALL_DIR}")
+
+# pkg-config, relocatable: the prefix is found from the .pc file's own place.
+file(RELATIVE_PATH PEDNAV_PC_PREFIX_FROM_PCDIR "/root/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/root")
+string(REGEX REPLACE "/$" "" PEDNAV_PC_PREFIX_FROM_PCDIR "${PEDNAV_PC_PREFIX_FROM_PCDIR}")
+configure_file("${CMAKE_CURRENT_LIST_DIR}/pednav.pc.in" "${CMAKE_CURRENT_BINARY_DIR}/pednav.pc" @ONLY)
+install(FILES "${CMAKE_CURRENT_BINARY_DIR}/pednav.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
