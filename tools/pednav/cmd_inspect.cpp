@@ -1,0 +1,82 @@
+#include "cmd_inspect.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+#include <pednav_io/sensor_log.hpp>
+#include <pednav_io/writers.hpp>
+
+#include "cli_common.hpp"
+
+namespace {
+
+void print_text(const pednav::io::SensorLog& log, bool forced) {
+    std::printf("file    %s\n", log.path.c_str());
+    std::printf("format  %s (%s)\n", log.format.c_str(), forced ? "as requested" : "detected");
+    std::printf("axes    %s\n", log.axes.c_str());
+    std::printf("\n%-9s %9s %10s %10s %11s %10s  %-34s %5s %8s\n", "stream", "count", "rate_hz", "median_hz",
+                "duration_s", "start_s", "units (file -> engine)", "gaps", "bad_rows");
+    for (const auto& s : log.streams) {
+        const std::string units = s.units_found.empty() ? "-" : s.units_found + " -> " + s.units_converted;
+        std::printf("%-9s %9zu %10.3f %10.3f %11.3f %10.3f  %-34s %5zu %8zu\n", s.name.c_str(), s.count, s.rate_hz,
+                    s.median_rate_hz, s.duration_s, s.t_first_s, units.c_str(), s.gaps, s.bad_rows);
+    }
+    std::printf("\nrecords: %zu IMU, %zu magnetometer, %zu barometer, %zu GNSS, %zu ground truth\n", log.imu.size(),
+                log.mag.size(), log.baro.size(), log.gnss.size(), log.truth.size());
+    if (!log.notes.empty()) {
+        std::printf("\nnotes:\n");
+        for (const auto& n : log.notes) std::printf("  %s\n", n.c_str());
+    }
+    std::printf("\nissues: %zu\n", log.issues.size() + log.issues_not_listed - (log.issues_not_listed > 0 ? 1 : 0));
+    for (const auto& i : log.issues) {
+        if (i.line > 0) std::printf("  line %zu: %s\n", i.line, i.message.c_str());
+        else std::printf("  %s\n", i.message.c_str());
+    }
+}
+
+}  // namespace
+
+int pednav_cmd_inspect(const std::vector<std::string>& argv) {
+    using namespace pednav;
+    cli::Args args(argv);
+    bool json = false;
+    std::string path, column_map_path;
+    io::ReadOptions options;
+    while (!args.done()) {
+        const std::string a = args.next();
+        if (a == "--json") json = true;
+        else if (a == "--format") options.format = args.value(a);
+        else if (a == "--column-map") column_map_path = args.value(a);
+        else if (a == "--gap") options.gap_s = cli::parse_numbers(args.value(a), 1, a)[0];
+        else if (!a.empty() && a[0] == '-') throw cli::UsageError("unknown option " + a + " for inspect");
+        else if (path.empty()) path = a;
+        else throw cli::UsageError("inspect takes one FILE (got " + path + " and " + a + ")");
+    }
+    if (path.empty()) throw cli::UsageError("inspect needs a FILE");
+    nlohmann::json column_map;
+    if (!column_map_path.empty()) {
+        column_map = nlohmann::json::parse(cli::read_text_file(column_map_path), nullptr, false);
+        if (column_map.is_discarded()) throw std::runtime_error(column_map_path + ": not valid JSON");
+        options.column_map = &column_map;
+    }
+    try {
+        const io::SensorLog log = io::read_sensor_file(path, options);
+        if (json) {
+            nlohmann::json j = io::sensor_log_json(log);
+            j["format_detected"] = options.format == "auto" && options.column_map == nullptr;
+            std::cout << j.dump(2) << "\n";
+        } else {
+            print_text(log, options.format != "auto" || options.column_map != nullptr);
+        }
+        return 0;
+    } catch (const io::ReadError& e) {
+        if (json) {
+            const nlohmann::json j = {{"path", path},
+                                      {"error", {{"file", e.path()}, {"line", e.line()}, {"reason", e.reason()}}}};
+            std::cout << j.dump(2) << "\n";
+        }
+        std::fprintf(stderr, "pednav inspect: %s\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,6 @@
+#pragma once
+#include <string>
+#include <vector>
+// pednav inspect FILE [--json] [--format NAME] [--column-map FILE] [--gap S]:
+// what the engine sees in a recording before anything runs.
+int pednav_cmd_inspect(const std::vector<std::string>& args);
