@@ -1,0 +1,44 @@
+// Readers for every kind of ground truth the project has (see docs/metrics.md
+// and each shared recording's SOURCE.md). Each throws std::runtime_error naming
+// the file (and line) on malformed input.
+#pragma once
+
+#include <string>
+
+#include <pednav_eval/truth.hpp>
+
+namespace pednav::eval {
+
+// pednav sim truth.csv: checkpoints every `period_s` (position, height, floor,
+// walking heading), the step events, a closed loop when the walk ends where it
+// started, and the walls of route.json when it sits next to truth.csv.
+Truth read_sim_truth(const std::string& truth_csv, double period_s = 0.1);
+
+// koroglu-foot-gcp *_gcp.csv: one footprint per stride at the end of its
+// stance (timestamp_s); stride 0 is the start. step_count = number of strides.
+Truth read_koroglu_gcp(const std::string& gcp_csv);
+
+// humolire-phone walk folder (keypoints.json + references.txt): landmark k at
+// reference time k, the known start point and heading, and the walls of
+// ../maps/map_data.json when present. The map's own frame is kept (x right,
+// y as stored); flip_y negates y (for a y-down image frame).
+Truth read_humolire(const std::string& walk_dir, bool flip_y = false);
+
+// IPIN competition logfile or ground-truth file: every "POSI;t;counter;lat;lon;floor;building"
+// line, converted to metres east/north of the first POSI point.
+Truth read_ipin_posi(const std::string& path);
+
+// A closed loop: the walk ends where it started; the distance walked is known
+// when length_m is finite, otherwise the track's own length is used.
+Truth make_loop_truth(double length_m = NAN);
+
+// ipol-gait-waist-feet <subject>-<trial>.json: the footsteps within the trial
+// (step_count = left + right, times at each step's heel strike), and the two
+// 10 m legs (start of trial to start of U-turn, end of U-turn to end of trial).
+Truth read_ipol_steps(const std::string& json_path, double rate_hz = 100.0, double leg_length_m = 10.0);
+
+// By kind name: "sim", "koroglu", "humolire", "ipin", "loop" (or "loop:LENGTH_M"),
+// "ipol"; "auto" guesses from the path.
+Truth read_truth(const std::string& path, const std::string& kind = "auto");
+
+}  // namespace pednav::eval

@@ -1,0 +1,131 @@
+#include <pednav_eval/track.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+
+#include "csv.hpp"
+
+namespace pednav::eval {
+
+using detail::column;
+using detail::split;
+using detail::to_double;
+
+TrackSample Track::at(double t_s) const {
+    if (samples.empty()) throw std::runtime_error("track: empty");
+    if (t_s <= samples.front().t_s) return samples.front();
+    if (t_s >= samples.back().t_s) return samples.back();
+    const auto it = std::upper_bound(samples.begin(), samples.end(), t_s,
+                                     [](double t, const TrackSample& s) { return t < s.t_s; });
+    const TrackSample& b = *it;
+    const TrackSample& a = *(it - 1);
+    const double span = b.t_s - a.t_s;
+    const double w = span > 0.0 ? (t_s - a.t_s) / span : 1.0;
+    TrackSample r = w < 0.5 ? a : b;  // floor and flags from the nearer sample
+    r.t_s = t_s;
+    for (int i = 0; i < 3; ++i) r.pos_m[i] = a.pos_m[i] + w * (b.pos_m[i] - a.pos_m[i]);
+    if (std::isfinite(a.heading_deg) && std::isfinite(b.heading_deg)) {
+        double d = std::fmod(b.heading_deg - a.heading_deg + 540.0, 360.0) - 180.0;
+        r.heading_deg = std::fmod(a.heading_deg + w * d + 360.0, 360.0);
+    }
+    return r;
+}
+
+double Track::length_m() const {
+    double len = 0.0;
+    for (size_t i = 1; i < samples.size(); ++i)
+        len += std::hypot(samples[i].pos_m[0] - samples[i - 1].pos_m[0], samples[i].pos_m[1] - samples[i - 1].pos_m[1]);
+    return len;
+}
+
+Track read_track_csv(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot read track " + path);
+    Track track;
+    std::string line;
+    std::vector<std::string> header;
+    int ct = -1, cx = -1, cy = -1, cz = -1, ch = -1, cf = -1;
+    size_t n = 0;
+    while (std::getline(in, line)) {
+        ++n;
+        if (line.empty() || line[0] == '#') continue;
+        const std::vector<std::string> f = split(line, ',');
+        if (header.empty()) {
+            header = f;
+            ct = column(header, "t"), cx = column(header, "x"), cy = column(header, "y"), cz = column(header, "z");
+            ch = column(header, "heading_deg"), cf = column(header, "floor");
+            if (ct < 0 || cx < 0 || cy < 0)
+                throw std::runtime_error(path + ":" + std::to_string(n) + ": a track needs the columns t, x, y");
+            continue;
+        }
+        if (f.size() < header.size())
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": expected " + std::to_string(header.size()) + " columns");
+        TrackSample s;
+        s.t_s = to_double(f[ct], path, n);
+        s.pos_m[0] = to_double(f[cx], path, n);
+        s.pos_m[1] = to_double(f[cy], path, n);
+        s.pos_m[2] = cz >= 0 ? to_double(f[cz], path, n) : 0.0;
+        if (ch >= 0 && !f[ch].empty()) s.heading_deg = to_double(f[ch], path, n);
+        if (cf >= 0 && !f[cf].empty()) {
+            s.floor = static_cast<int>(to_double(f[cf], path, n));
+            s.has_floor = true;
+        }
+        if (!track.samples.empty() && s.t_s < track.samples.back().t_s)
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": time goes backwards");
+        track.samples.push_back(s);
+    }
+    if (track.samples.empty()) throw std::runtime_error(path + ": no track samples");
+    return track;
+}
+
+std::vector<double> read_step_times_csv(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot read steps " + path);
+    std::vector<double> t;
+    std::string line;
+    size_t n = 0;
+    bool header = true;
+    while (std::getline(in, line)) {
+        ++n;
+        if (line.empty() || line[0] == '#') continue;
+        const std::vector<std::string> f = split(line, ',');
+        if (header) {
+            header = false;
+            char* end = nullptr;
+            std::strtod(f[0].c_str(), &end);
+            if (f[0].empty() || *end != '\0') continue;  // a header line
+        }
+        t.push_back(to_double(f[0], path, n));
+    }
+    return t;
+}
+
+Track track_from_positions(const std::vector<pn_position_t>& positions) {
+    Track track;
+    track.samples.reserve(positions.size());
+    for (const pn_position_t& p : positions) {
+        TrackSample s;
+        s.t_s = static_cast<double>(p.header.t_ns) * 1e-9;
+        for (int i = 0; i < 3; ++i) s.pos_m[i] = p.pos_enu_m[i];
+        s.heading_deg = std::fmod(p.heading_rad * 180.0 / M_PI + 720.0, 360.0);
+        s.has_floor = (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) != 0;
+        s.floor = p.floor;
+        track.samples.push_back(s);
+    }
+    return track;
+}
+
+std::vector<double> step_times_from_strides(const std::vector<pn_stride_t>& strides) {
+    std::vector<double> t;
+    for (const pn_stride_t& s : strides) t.push_back(static_cast<double>(s.header.t_ns) * 1e-9);
+    return t;
+}
+
+std::vector<double> step_times_from_steps(const std::vector<pn_step_t>& steps) {
+    std::vector<double> t;
+    for (const pn_step_t& s : steps) t.push_back(static_cast<double>(s.header.t_ns) * 1e-9);
+    return t;
+}
+
+}  // namespace pednav::eval
