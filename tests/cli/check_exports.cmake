@@ -1,0 +1,16 @@
+# cmake -DNM=<nm> -DPLUGIN=<file> -P check_exports.cmake
+# Fails unless the plugin's dynamic symbol table defines exactly pnp_entry_v1.
+execute_process(COMMAND ${NM} -D --defined-only ${PLUGIN} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "nm failed on ${PLUGIN}")
+endif()
+string(REGEX MATCHALL "[^\n]+" lines "${out}")
+set(symbols "")
+foreach(line IN LISTS lines)
+  string(REGEX REPLACE "^[0-9a-fA-F]* *[A-Za-z] " "" name "${line}")
+  list(APPEND symbols "${name}")
+endforeach()
+if(NOT symbols STREQUAL "pnp_entry_v1")
+  message(FATAL_ERROR "${PLUGIN} exports [${symbols}], expected exactly [pnp_entry_v1]")
+endif()
+message(STATUS "${PLUGIN}: exports only pnp_entry_v1")
