@@ -44,8 +44,8 @@ PN_SENTINEL(PN_ERROR_MESSAGE_SIZE == 256, error_message_size);
 PN_SENTINEL(PN_OK == 0 && PN_NO_DATA == 1, status_success);
 PN_SENTINEL(PN_E_INVALID_ARGUMENT == -1 && PN_E_INVALID_CONFIG == -2 && PN_E_UNSUPPORTED == -3 &&
                 PN_E_ABI_MISMATCH == -4 && PN_E_NOT_FOUND == -5 && PN_E_BAD_STATE == -6 &&
-                PN_E_OUT_OF_ORDER == -7 && PN_E_NUMERIC == -8 && PN_E_OUT_OF_MEMORY == -9 &&
-                PN_E_IO == -10 && PN_E_INTERNAL == -11 && PN_E_BAD_INPUT == -12,
+                PN_E_OUT_OF_ORDER == -7 && PN_E_NUMERIC == -8 && PN_E_OUT_OF_MEMORY == -9 && PN_E_IO == -10 &&
+                PN_E_INTERNAL == -11 && PN_E_BAD_INPUT == -12,
             status_failures);
 PN_SENTINEL(PN_REC_IMU == 1 && PN_REC_MAG == 2 && PN_REC_BARO == 3 && PN_REC_GNSS == 4 &&
                 PN_REC_GAIT_PHASE == 5 && PN_REC_STEP == 6 && PN_REC_ATTITUDE == 7 &&

@@ -19,17 +19,15 @@ int pn_noexcept_slot_probe() {
     return ops.reset != nullptr;
 }
 #elif PN_TEST_CASE == 2
-static pn_status_t emit_impl(const pnp_sink_t*, const pn_record_header_t*) PN_TEST_NOEXCEPT {
-    return PN_OK;
-}
+static pn_status_t emit_impl(const pnp_sink_t*, const pn_record_header_t*) PN_TEST_NOEXCEPT { return PN_OK; }
 int pn_noexcept_slot_probe() {
     pnp_sink_t sink{};
     sink.emit = &emit_impl;
     return sink.emit != nullptr;
 }
 #elif PN_TEST_CASE == 3
-static pn_status_t create_impl(const pnp_descriptor_t*, const pnp_host_t*, const pnp_create_info_t*,
-                               void**, pn_error_t*) PN_TEST_NOEXCEPT {
+static pn_status_t create_impl(const pnp_descriptor_t*, const pnp_host_t*, const pnp_create_info_t*, void**,
+                               pn_error_t*) PN_TEST_NOEXCEPT {
     return PN_OK;
 }
 int pn_noexcept_slot_probe() {

@@ -22,7 +22,8 @@
 static const char *const kDefaultConfig =
     "{\"format\": \"pednav-config/1\", \"mount\": \"foot\", \"pipelines\": {\"foot\": {"
     "\"step_detector\": {\"plugin\": \"org.pednav.test.counting_steps\", \"params\": {\"every_n\": 10}},"
-    "\"position_filter\": {\"plugin\": \"org.pednav.test.step_counter\", \"params\": {\"step_length_m\": 0.7}}"
+    "\"position_filter\": {\"plugin\": \"org.pednav.test.step_counter\", \"params\": {\"step_length_m\": "
+    "0.7}}"
     "}}}";
 
 /* What an app might keep per sample: the record plus its own bookkeeping. */
@@ -123,7 +124,8 @@ int main(int argc, char **argv) {
     /* Push in two batches; the stride skips the app's own fields. */
     status = pn_engine_push_imu(engine, &samples[0].imu, SAMPLE_COUNT / 2, sizeof(app_sample_t), &err);
     ok = ok && check(status, &err, "pn_engine_push_imu");
-    status = pn_engine_push_imu(engine, &samples[SAMPLE_COUNT / 2].imu, SAMPLE_COUNT / 2, sizeof(app_sample_t), &err);
+    status = pn_engine_push_imu(engine, &samples[SAMPLE_COUNT / 2].imu, SAMPLE_COUNT / 2,
+                                sizeof(app_sample_t), &err);
     ok = ok && check(status, &err, "pn_engine_push_imu");
     status = pn_engine_flush(engine, &err);
     ok = ok && check(status, &err, "pn_engine_flush");
@@ -137,13 +139,13 @@ int main(int argc, char **argv) {
             ++positions;
             last_east = out.position.pos_enu_m[0];
             last_north = out.position.pos_enu_m[1];
-            printf("position at t=%.2f s: east %.3f m, north %.3f m, sigma %.3f m\n", t_s, last_east, last_north,
-                   sqrt(out.position.cov_enu_m2[0] + out.position.cov_enu_m2[4]));
+            printf("position at t=%.2f s: east %.3f m, north %.3f m, sigma %.3f m\n", t_s, last_east,
+                   last_north, sqrt(out.position.cov_enu_m2[0] + out.position.cov_enu_m2[4]));
         }
     }
     if (status != PN_NO_DATA) ok = ok && check(status, &err, "pn_engine_poll");
 
-    {   /* Describe with the two-call size idiom. */
+    { /* Describe with the two-call size idiom. */
         size_t size = 0;
         char *text;
         if (pn_engine_describe(engine, NULL, 0, &size) != PN_E_INVALID_ARGUMENT || size == 0) ok = 0;
@@ -151,13 +153,13 @@ int main(int argc, char **argv) {
         if (!text || pn_engine_describe(engine, text, size, &size) != PN_OK) {
             fprintf(stderr, "pn_engine_describe failed\n");
             ok = 0;
-        }
-        else printf("describe: %lu bytes of JSON\n", (unsigned long)(size - 1));
+        } else
+            printf("describe: %lu bytes of JSON\n", (unsigned long)(size - 1));
         free(text);
     }
     pn_engine_destroy(engine);
 
-    printf("summary: %d steps, %d positions, last at east %.3f m, north %.3f m, %s\n", steps, positions, last_east,
-           last_north, ok ? "all statuses ok" : "FAILED");
+    printf("summary: %d steps, %d positions, last at east %.3f m, north %.3f m, %s\n", steps, positions,
+           last_east, last_north, ok ? "all statuses ok" : "FAILED");
     return ok ? 0 : 1;
 }

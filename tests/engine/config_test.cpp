@@ -59,7 +59,8 @@ TEST_CASE("unknown keys fail with PN_E_INVALID_CONFIG and the key's JSON pointer
 }
 
 TEST_CASE("a param out of range names the param") {
-    const auto r = create_fails(make_config({{"step_detector", "org.pednav.test.counting_steps", {{"every_n", 0}}}}));
+    const auto r =
+        create_fails(make_config({{"step_detector", "org.pednav.test.counting_steps", {{"every_n", 0}}}}));
     CHECK(r.status == PN_E_INVALID_CONFIG);
     CHECK(r.where == "/pipelines/foot/step_detector/params/every_n");
 }
@@ -73,8 +74,8 @@ TEST_CASE("a wrong format string names /format") {
 }
 
 TEST_CASE("an unknown plugin id fails with PN_E_NOT_FOUND at .../plugin") {
-    const auto r = create_fails(make_config({{"step_detector", "org.pednav.test.counting_steps"},
-                                             {"position_filter", "org.example.nothing"}}));
+    const auto r = create_fails(make_config(
+        {{"step_detector", "org.pednav.test.counting_steps"}, {"position_filter", "org.example.nothing"}}));
     CHECK(r.status == PN_E_NOT_FOUND);
     CHECK(r.where == "/pipelines/foot/position_filter/plugin");
 }
@@ -103,7 +104,8 @@ TEST_CASE("a plugin of another kind than its role fails at .../plugin") {
 }
 
 TEST_CASE("a config without a pipeline for its mount fails with PN_E_NOT_FOUND") {
-    auto doc = nlohmann::json::parse(make_config({{"step_detector", "org.pednav.test.counting_steps"}}, "chest"));
+    auto doc =
+        nlohmann::json::parse(make_config({{"step_detector", "org.pednav.test.counting_steps"}}, "chest"));
     doc["mount"] = "foot";
     const auto r = create_fails(doc.dump());
     CHECK(r.status == PN_E_NOT_FOUND);

@@ -116,7 +116,8 @@ TEST_CASE("rejected files are logged through the app's log callback") {
     CHECK(found);
 }
 
-TEST_CASE("old minor: a vtable trimmed to PNP_NODE_OPS_MIN_SIZE loads and runs; absent slots are never called") {
+TEST_CASE(
+    "old minor: a vtable trimmed to PNP_NODE_OPS_MIN_SIZE loads and runs; absent slots are never called") {
     Engine e(make_config({{"position_filter", "org.pednav.test.old_minor"}}), {fixture_dir("old_minor")});
     REQUIRE_MESSAGE(e.status() == PN_OK, e.error().message);
     CHECK(pn_engine_latency_ns(e.get()) == 0);

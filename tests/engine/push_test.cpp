@@ -11,16 +11,19 @@ namespace {
 // Step detector (a step every 10 samples, optional look-ahead) followed by
 // the fixed-stride position filter.
 std::string steps_config(int latency_samples = 0, bool check_alignment = false, bool declare_latency = true) {
-    return make_config({{"step_detector", "org.pednav.test.counting_steps",
-                         {{"latency_samples", latency_samples}, {"declare_latency", declare_latency}}},
-                        {"position_filter", "org.pednav.test.step_counter", {{"check_alignment", check_alignment}}}});
+    return make_config(
+        {{"step_detector",
+          "org.pednav.test.counting_steps",
+          {{"latency_samples", latency_samples}, {"declare_latency", declare_latency}}},
+         {"position_filter", "org.pednav.test.step_counter", {{"check_alignment", check_alignment}}}});
 }
 
 std::string full_config(int latency_samples, double correction_rad) {
     return make_config(
         {{"step_detector", "org.pednav.test.counting_steps", {{"latency_samples", latency_samples}}},
          {"attitude_estimator", "org.pednav.test.fixed_heading", {{"heading_deg", 0.0}}},
-         {"position_filter", "org.pednav.test.step_counter",
+         {"position_filter",
+          "org.pednav.test.step_counter",
           {{"check_alignment", true}, {"correction_rad", correction_rad}}}});
 }
 
@@ -139,9 +142,10 @@ TEST_CASE("determinism: the same input gives bit-identical output however it is 
     REQUIRE(a.status() == PN_OK);
     REQUIRE(b.status() == PN_OK);
     for (auto* e : {&a, &b})
-        REQUIRE(pn_engine_set_output_mask(e->get(), PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) |
-                                                        PN_REC_MASK(PN_REC_STEP) | PN_REC_MASK(PN_REC_ATTITUDE) |
-                                                        PN_REC_MASK(PN_REC_GAIT_PHASE)) == PN_OK);
+        REQUIRE(
+            pn_engine_set_output_mask(e->get(), PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) |
+                                                    PN_REC_MASK(PN_REC_STEP) | PN_REC_MASK(PN_REC_ATTITUDE) |
+                                                    PN_REC_MASK(PN_REC_GAIT_PHASE)) == PN_OK);
     const auto samples = walk(0, 500);
     REQUIRE(push(a, samples) == PN_OK);
     const size_t batches[] = {1, 7, 13, 2, 31, 64, 3};
@@ -201,8 +205,8 @@ TEST_CASE("feedback: a correction emitted at sample k applies from sample k+1") 
         REQUIRE(d["pipeline"]["feedback"].size() == 1);
         CHECK(d["pipeline"]["feedback"][0]["from"] == "foot/position_filter");
         CHECK(d["pipeline"]["feedback"][0]["to"] == "foot/attitude_estimator");
-        REQUIRE(pn_engine_set_output_mask(e.get(), PN_REC_MASK(PN_REC_ATTITUDE) | PN_REC_MASK(PN_REC_POSITION)) ==
-                PN_OK);
+        REQUIRE(pn_engine_set_output_mask(
+                    e.get(), PN_REC_MASK(PN_REC_ATTITUDE) | PN_REC_MASK(PN_REC_POSITION)) == PN_OK);
         pn_error_t err = make_error();
         REQUIRE_MESSAGE(push(e, walk(0, 40), &err) == PN_OK, err.message);
         REQUIRE(pn_engine_flush(e.get(), &err) == PN_OK);

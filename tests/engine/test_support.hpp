@@ -7,13 +7,15 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <pednav/pn_engine.h>
+#include <nlohmann/json.hpp>
 
 namespace pednav::test {
 
 // <build>/test-plugins/<name>: one fixture library per directory.
-inline std::string fixture_dir(const std::string& name) { return std::string(PEDNAV_TEST_PLUGIN_DIR) + "/" + name; }
+inline std::string fixture_dir(const std::string& name) {
+    return std::string(PEDNAV_TEST_PLUGIN_DIR) + "/" + name;
+}
 
 inline pn_error_t make_error() {
     pn_error_t e;
@@ -69,7 +71,8 @@ public:
 
     nlohmann::json describe() const {
         size_t size = 0;
-        if (pn_engine_describe(engine_, nullptr, 0, &size) != PN_E_INVALID_ARGUMENT || size == 0) return nullptr;
+        if (pn_engine_describe(engine_, nullptr, 0, &size) != PN_E_INVALID_ARGUMENT || size == 0)
+            return nullptr;
         std::string text(size, '\0');
         if (pn_engine_describe(engine_, &text[0], size, &size) != PN_OK) return nullptr;
         text.resize(size - 1);

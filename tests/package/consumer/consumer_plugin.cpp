@@ -12,7 +12,8 @@ public:
     static constexpr uint64_t kConsumes = PN_REC_MASK(PN_REC_IMU);
     static constexpr uint64_t kProduces = PN_REC_MASK(PN_REC_STEP);
 
-    EveryNSteps(pednav::sdk::Params& p, const pednav::sdk::CreateContext&) : every_n_(p.integer("every_n", 5, 1, 1000)) {}
+    EveryNSteps(pednav::sdk::Params& p, const pednav::sdk::CreateContext&)
+        : every_n_(p.integer("every_n", 5, 1, 1000)) {}
     void on_imu(const pn_imu_t& imu) override {
         if (++n_ % every_n_ == 0) emit(pednav::sdk::make_record<pn_step_t>(imu.header.t_ns));
     }
