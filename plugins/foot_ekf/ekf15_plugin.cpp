@@ -121,9 +121,12 @@ private:
         c.init_velocity_sd_mps = p.number("init_velocity_sd_mps", c.init_velocity_sd_mps, 0.0, 100.0);
         c.zupt_sd_mps = p.number("zupt_sd_mps", c.zupt_sd_mps, 1e-6, 100.0);
         c.zaru_sd_radps = p.number("zaru_sd_radps", c.zaru_sd_radps, 1e-6, 100.0);
+        c.zaru_max_radps = p.number("zaru_max_radps", c.zaru_max_radps, 0.0, 100.0);
+        c.zupt_lever_m = p.number("zupt_lever_m", c.zupt_lever_m, 0.0, 10.0);
         c.hupt_sd_m = p.number("hupt_sd_m", c.hupt_sd_m, 1e-6, 100.0);
         c.min_stance_s = p.number("min_stance_s", c.min_stance_s, 0.0, 10.0);
         c.min_swing_s = p.number("min_swing_s", c.min_swing_s, 0.0, 10.0);
+        c.min_stride_m = p.number("min_stride_m", c.min_stride_m, 0.0, 10.0);
         c.heel_strike_deg = p.number("heel_strike_deg", c.heel_strike_deg, 0.0, 90.0);
         c.max_dt_s = p.number("max_dt_s", c.max_dt_s, 1e-4, 10.0);
         return c;

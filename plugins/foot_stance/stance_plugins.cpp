@@ -70,7 +70,7 @@ public:
     static constexpr const char* kVersion = "1.0.0";
     static constexpr const char* kDescription =
         "stance hypothesis optimal detector (Skog et al. 2010) over a centred window in seconds, "
-        "majority filter";
+        "adaptive threshold relative to the minimum over a gait cycle, majority filter";
 
     ShoeStance(Params& p, const CreateContext& ctx) {
         pednav::foot::ShoeConfig c;
@@ -79,6 +79,9 @@ public:
         c.threshold = p.number("threshold", c.threshold, 0.0, 1e12);
         c.gravity_mps2 = p.number("gravity_mps2", c.gravity_mps2, 0.0, 20.0);
         c.window_s = p.number("window_s", c.window_s, 0.0, 2.0);
+        c.adaptive_window_s = p.number("adaptive_window_s", c.adaptive_window_s, 0.0, 10.0);
+        c.adaptive_ratio = p.number("adaptive_ratio", c.adaptive_ratio, 1.0, 1e6);
+        c.adaptive_max = p.number("adaptive_max", c.adaptive_max, 0.0, 1e12);
         c.median_window_s = p.number("median_window_s", c.median_window_s, 0.0, 2.0);
         detector_ = std::make_unique<StanceDetector>(c, capacity_rate(ctx));
     }

@@ -1,12 +1,14 @@
 #include "foot_eval.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include <pednav_io/sensor_log.hpp>
+#include <pednav_sim/simulate.hpp>
 
 namespace pednav::foot_eval {
 
@@ -187,6 +189,70 @@ IpolScore score_ipol(const std::string& trial, const std::string& foot, const st
     sc.leg_back_m = hypot2(p2.pos_enu_m, p3.pos_enu_m);
     sc.strides = r.strides.size();
     sc.footsteps = meta.at(foot == "lf" ? "LeftFootEvents" : "RightFootEvents").size();
+    return sc;
+}
+
+SimScore score_sim(const SimCase& c, const std::string& config_json) {
+    sim::SimOptions so;
+    so.rate_hz = c.rate_hz;
+    so.sensor_errors = c.sensor_errors;
+    so.seed = c.seed;
+    so.with_gnss = false;
+    so.with_baro = false;
+    for (int i = 0; i < 3; ++i) so.mounting_rpy_deg[i] = c.mounting_rpy_deg[i];
+    const sim::SimOutput out = sim::simulate(sim::builtin_route(c.route), so);
+    auto doc = nlohmann::json::parse(config_json);
+    doc["imu_rate_hz"] = c.rate_hz;
+    ReplayOptions o;
+    o.config_json = doc.dump();
+    o.plugin_dirs = {PEDNAV_PLUGIN_OUTPUT_DIR};
+    // The truth's start point and walking heading.
+    const auto& t0 = out.truth.front();
+    for (int i = 0; i < 3; ++i) o.start_enu_m[i] = t0.pos_enu_m[i];
+    const ReplayResult r = replay(o, out.records());
+    if (!r.error.empty()) throw std::runtime_error("sim " + c.route + ": " + r.error);
+    if (r.positions.empty()) throw std::runtime_error("sim " + c.route + ": no positions");
+    SimScore sc;
+    sc.distance_m = out.distance_m;
+    sc.strides = r.strides.size();
+    sc.true_strides = out.step_times_s.size();
+    for (const auto& s : r.strides) (s.stride_class == PN_STRIDE_CLASS_LEVEL ? sc.level : sc.stairs)++;
+    const auto& a = r.positions.front();
+    const auto& b = r.positions.back();
+    sc.closure_m = hypot2(a.pos_enu_m, b.pos_enu_m);
+    sc.closure_pct = 100.0 * sc.closure_m / sc.distance_m;
+    // Align the estimate to the truth at the first output (heading included:
+    // the attitude estimator does not know the walking direction).
+    size_t k = 0;
+    while (k < out.truth.size() && out.truth[k].t_s * 1e9 < a.header.t_ns - 1000) ++k;
+    const auto& ta = out.truth[std::min(k, out.truth.size() - 1)];
+    double sum_z = 0;
+    size_t n = 0, j = k;
+    for (const auto& p : r.positions) {
+        while (j + 1 < out.truth.size() && out.truth[j].t_s * 1e9 < p.header.t_ns - 1000) ++j;
+        const auto& tj = out.truth[j];
+        const double ez = (p.pos_enu_m[2] - a.pos_enu_m[2]) - (tj.pos_enu_m[2] - ta.pos_enu_m[2]);
+        sum_z += std::abs(ez);
+        ++n;
+        sc.final_err_z_m = ez;
+    }
+    sc.mean_err_z_m = sum_z / n;
+    sc.final_err_z_m = std::abs(sc.final_err_z_m);
+    // Horizontal error after fitting the start heading (one rotation about the start).
+    double sdot = 0, scross = 0;
+    j = k;
+    std::vector<std::array<double, 4>> pairs;
+    for (const auto& p : r.positions) {
+        while (j + 1 < out.truth.size() && out.truth[j].t_s * 1e9 < p.header.t_ns - 1000) ++j;
+        const double ex = p.pos_enu_m[0] - a.pos_enu_m[0], ey = p.pos_enu_m[1] - a.pos_enu_m[1];
+        const double gx = out.truth[j].pos_enu_m[0] - ta.pos_enu_m[0], gy = out.truth[j].pos_enu_m[1] - ta.pos_enu_m[1];
+        sdot += ex * gx + ey * gy;
+        scross += ex * gy - ey * gx;
+        pairs.push_back({ex, ey, gx, gy});
+    }
+    const double ang = std::atan2(scross, sdot), cs = std::cos(ang), sn = std::sin(ang);
+    for (const auto& q : pairs)
+        sc.max_err_h_m = std::max(sc.max_err_h_m, std::hypot(cs * q[0] - sn * q[1] - q[2], sn * q[0] + cs * q[1] - q[3]));
     return sc;
 }
 

@@ -62,4 +62,23 @@ struct IpolScore {
 };
 IpolScore score_ipol(const std::string& trial, const std::string& foot, const std::string& config_json);
 
+struct SimScore {
+    double distance_m = 0;       // horizontal distance walked (truth)
+    double closure_m = 0;        // horizontal distance between estimated start and end
+    double closure_pct = 0;
+    double max_err_h_m = 0;      // horizontal error against the truth, largest
+    double mean_err_z_m = 0;     // |height error| against the truth, mean over samples
+    double final_err_z_m = 0;    // height error at the end
+    size_t strides = 0, true_strides = 0;
+    size_t level = 0, stairs = 0;  // strides by class
+};
+struct SimCase {
+    std::string route = "corridor_loop";
+    double rate_hz = 200.0;
+    bool sensor_errors = true;
+    uint64_t seed = 1;
+    double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};
+};
+SimScore score_sim(const SimCase& c, const std::string& config_json);
+
 }  // namespace pednav::foot_eval

@@ -12,8 +12,25 @@ int main(int argc, char** argv) {
     nlohmann::json patch = detector_patch(det);
     if (argc > 2) patch.merge_patch(nlohmann::json::parse(argv[2]));
     const std::string cfg = foot_config(patch, 0.0);
+    const bool quick = argc > 3 && std::string(argv[3]) == "quick";  // real foot recordings only
     try {
         std::printf("detector %s\n", det.c_str());
+        for (const char* route : {"corridor_loop", "stairs"}) {
+            if (quick) break;
+            for (bool errors : {false, true}) {
+                SimCase c;
+                c.route = route;
+                c.sensor_errors = errors;
+                c.rate_hz = 400;
+                c.mounting_rpy_deg[0] = 20;
+                c.mounting_rpy_deg[1] = -30;
+                c.mounting_rpy_deg[2] = 10;
+                const SimScore s = score_sim(c, cfg);
+                std::printf("sim %-13s errors %d strides %3zu/%3zu (level %zu stairs %zu) closure %.3f m %.3f %% max_h %.3f  z mean %.3f final %.3f\n",
+                            route, errors, s.strides, s.true_strides, s.level, s.stairs, s.closure_m, s.closure_pct,
+                            s.max_err_h_m, s.mean_err_z_m, s.final_err_z_m);
+            }
+        }
         for (const char* w : {"short_walk", "long_walk"}) {
             const XioScore s = score_xio(w, cfg);
             std::printf("xio %-11s strides %3zu  walked %6.2f m  closure %.3f m (h %.3f)  %.2f %%\n", w, s.strides,
@@ -26,6 +43,7 @@ int main(int argc, char** argv) {
         }
         for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
             for (const char* f : {"lf", "rf"}) {
+                if (quick) break;
                 const IpolScore s = score_ipol(t, f, cfg);
                 std::printf("ipol %-4s %s strides %2zu/%2zu  out %6.2f m  back %6.2f m\n", t, f, s.strides, s.footsteps,
                             s.leg_out_m, s.leg_back_m);

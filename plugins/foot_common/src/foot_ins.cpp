@@ -80,13 +80,16 @@ void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in,
 
     if (stance && !in_stance_) begin_stance(t_ns);
     if (stance && (cfg_.zupt || cfg_.zaru || cfg_.hupt)) {
+        const Vec3 w_est = w - bg;
+        const double rate = w_est.norm();
         if (cfg_.zupt) {
-            const double var = cfg_.zupt_sd_mps * cfg_.zupt_sd_mps;
-            for (int i = 0; i < 3; ++i) ekf_.update_scalar(Ekf15::VEL + i, -v_[i], var);
+            // A stance foot rolls about its contact point: the sensor ahead of
+            // it moves at about |w| times the lever.
+            const double sd = cfg_.zupt_sd_mps + cfg_.zupt_lever_m * rate;
+            for (int i = 0; i < 3; ++i) ekf_.update_scalar(Ekf15::VEL + i, -v_[i], sd * sd);
         }
-        if (cfg_.zaru) {
+        if (cfg_.zaru && rate < cfg_.zaru_max_radps) {
             const double var = cfg_.zaru_sd_radps * cfg_.zaru_sd_radps;
-            const Vec3 w_est = w - bg;
             for (int i = 0; i < 3; ++i) ekf_.update_scalar(Ekf15::BG + i, w_est[i], var);
         }
         if (cfg_.hupt && level_step_) {
@@ -129,7 +132,9 @@ bool FootIns::close_stance(StrideOut& s) {
     bool emitted = false;
     if (!have_anchor_) {
         have_anchor_ = true;
-    } else if (moving_s_ >= cfg_.min_swing_s) {
+    } else if (moving_s_ >= cfg_.min_swing_s &&
+               std::hypot(last_stance_pos_.x() - anchor_pos_.x(), last_stance_pos_.y() - anchor_pos_.y()) >=
+                   cfg_.min_stride_m) {
         s.t_start_ns = anchor_t_;
         s.t_end_ns = last_t_;
         s.displacement = last_stance_pos_ - anchor_pos_;

@@ -12,6 +12,7 @@ StanceDetector::StanceDetector(const MultiConditionConfig& c, double max_rate_hz
     : kind_(Kind::MultiCondition),
       multi_(c),
       stat_(half_ns(c.window_s), detail::capacity_for(c.window_s, max_rate_hz)),
+      adapt_(0, 16),
       vote_(half_ns(c.median_window_s), detail::capacity_for(c.median_window_s, max_rate_hz)) {
     stat_.acc().is_shoe = false;
 }
@@ -20,8 +21,11 @@ StanceDetector::StanceDetector(const ShoeConfig& c, double max_rate_hz)
     : kind_(Kind::Shoe),
       shoe_(c),
       stat_(half_ns(c.window_s), detail::capacity_for(c.window_s, max_rate_hz)),
-      vote_(half_ns(c.median_window_s), detail::capacity_for(c.median_window_s, max_rate_hz)) {
+      adapt_(half_ns(c.adaptive_window_s), detail::capacity_for(c.adaptive_window_s, max_rate_hz)),
+      vote_(half_ns(c.median_window_s), detail::capacity_for(c.median_window_s, max_rate_hz)),
+      adaptive_(c.adaptive_window_s > 0) {
     stat_.acc().is_shoe = true;
+    adapt_.acc().init(detail::capacity_for(c.adaptive_window_s, max_rate_hz));
 }
 
 bool StanceDetector::test(const detail::ImuElem& centre, double& statistic) const {

@@ -45,6 +45,15 @@ public:
         while (c_ < n_ && t_new >= at(c_).t_ns + half_ns_) emit_centre(out);
     }
 
+    // Finishes every centre whose window ends at or before `watermark_ns`:
+    // the caller guarantees that every sample up to the watermark has been
+    // pushed (a downstream stage uses the raw input time minus the upstream
+    // look-ahead, so cascaded stages add no sampling delay to the latency).
+    template <class Out>
+    void advance(int64_t watermark_ns, Out&& out) {
+        while (c_ < n_ && at(c_).t_ns + half_ns_ <= watermark_ns) emit_centre(out);
+    }
+
     // End of stream: finish every pending centre with a truncated window.
     template <class Out>
     void flush(Out&& out) {

@@ -31,21 +31,24 @@ struct FootInsConfig {
     // Process noise densities.
     double gyro_noise_radps_per_sqrthz = 0.005;
     double accel_noise_mps2_per_sqrthz = 0.05;
-    double gyro_bias_walk_radps_per_sqrts = 1e-4;
+    double gyro_bias_walk_radps_per_sqrts = 1e-5;
     double accel_bias_walk_mps2_per_sqrts = 1e-3;
     // Initial standard deviations.
     double init_roll_pitch_sd_rad = 0.02;
     double init_heading_sd_rad = 0.0;
-    double init_gyro_bias_sd_radps = 0.01;
+    double init_gyro_bias_sd_radps = 0.001;
     double init_accel_bias_sd_mps2 = 0.1;
     double init_velocity_sd_mps = 0.01;
     // Measurement standard deviations.
     double zupt_sd_mps = 0.01;
     double zaru_sd_radps = 0.05;
+    double zaru_max_radps = 0.2;      // ZARU only while |w - bg| is below this (a rolling foot is not still)
+    double zupt_lever_m = 0.1;        // ZUPT sd grows by this times |w - bg| (sensor ahead of the pivot)
     double hupt_sd_m = 0.01;
     // Stride segmentation and level/stairs classification.
-    double min_stance_s = 0.04;       // shorter stances do not end a stride
+    double min_stance_s = 0.0;        // shorter stances do not end a stride
     double min_swing_s = 0.15;        // motion between counted stances
+    double min_stride_m = 0.2;        // horizontal displacement between counted stances
     double heel_strike_deg = 12.0;    // toe-up pitch in the swing that marks a level step
     double max_dt_s = 0.1;
 };

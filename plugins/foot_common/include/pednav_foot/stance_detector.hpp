@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "centred_window.hpp"
 
@@ -38,13 +39,22 @@ struct MultiConditionConfig {
 // u the mean specific force direction over the window; stance when T < gamma.
 // With gravity_mps2 = 0 the window's own mean |a| replaces g, which makes the
 // test blind to accelerometer scale errors (a sensor reading 0.97 g at rest).
+//
+// Adaptive threshold (adaptive_window_s > 0): a gait cycle holds one stance,
+// and in brisk walking or running it is short and far from still. A sample is
+// also stance when T is within a factor adaptive_ratio of the smallest T in a
+// centred window of adaptive_window_s (longer than one gait cycle) and below
+// adaptive_max; the running minimum is a monotone deque, O(1) amortised.
 struct ShoeConfig {
-    double accel_sd_mps2 = 0.4;     // sigma_a
-    double gyro_sd_radps = 0.15;    // sigma_w
-    double threshold = 1.0;         // gamma (dimensionless, W-normalised)
-    double gravity_mps2 = 0.0;      // g; 0 = the window's mean |a|
-    double window_s = 0.1;          // W in seconds
-    double median_window_s = 0.11;  // majority filter
+    double accel_sd_mps2 = 1.0;      // sigma_a
+    double gyro_sd_radps = 0.5;      // sigma_w
+    double threshold = 1.0;          // gamma (dimensionless, W-normalised)
+    double gravity_mps2 = 0.0;       // g; 0 = the window's mean |a|
+    double window_s = 0.06;          // W in seconds
+    double adaptive_window_s = 1.0;  // 0 = fixed threshold only
+    double adaptive_ratio = 3.0;
+    double adaptive_max = 60.0;
+    double median_window_s = 0.05;   // majority filter
 };
 
 namespace detail {
@@ -82,6 +92,32 @@ struct ShoeAcc {
     void reset() { *this = ShoeAcc{}; }
 };
 
+struct StatElem {
+    int64_t t_ns;
+    double statistic;
+    uint64_t seq;
+};
+// Sliding minimum of StatElem::statistic: monotone deque in a ring.
+struct MinAcc {
+    std::vector<StatElem> dq;
+    size_t mask = 0, head = 0, tail = 0;  // [head, tail)
+    void init(size_t capacity) {
+        size_t cap = 16;
+        while (cap < capacity) cap <<= 1;
+        dq.resize(cap);
+        mask = cap - 1;
+    }
+    void add(const StatElem& e) {
+        while (tail > head && dq[(tail - 1) & mask].statistic >= e.statistic) --tail;
+        dq[tail++ & mask] = e;
+    }
+    void remove(const StatElem& e) {
+        if (tail > head && dq[head & mask].seq == e.seq) ++head;
+    }
+    void reset() { head = tail = 0; }
+    double min() const { return tail > head ? dq[head & mask].statistic : HUGE_VAL; }
+};
+
 struct VoteElem {
     int64_t t_ns;
     double statistic;
@@ -109,7 +145,7 @@ public:
     StanceDetector(const MultiConditionConfig& c, double max_rate_hz);
     StanceDetector(const ShoeConfig& c, double max_rate_hz);
 
-    int64_t latency_ns() const { return stat_.half_ns() + vote_.half_ns(); }
+    int64_t latency_ns() const { return stat_.half_ns() + adapt_.half_ns() + vote_.half_ns(); }
 
     // Feeds one IMU sample (SI, sensor axes); calls out(const StanceDecision&)
     // for each sample whose decision became final.
@@ -123,11 +159,20 @@ public:
         e.w2 = gyro_radps[0] * gyro_radps[0] + gyro_radps[1] * gyro_radps[1] + gyro_radps[2] * gyro_radps[2];
         e.am = std::sqrt(e.a[0] * e.a[0] + e.a[1] * e.a[1] + e.a[2] * e.a[2]) - 9.81;
         stat_.push(e, [&](const detail::ImuElem& c, const StatAcc& acc) { vote(c, acc, out); });
+        // Every stage-1 result up to t - h1 is out: later stages may finish
+        // their centres against that watermark.
+        int64_t mark = t_ns - stat_.half_ns();
+        if (adaptive_) {
+            adapt_.advance(mark, [&](const detail::StatElem& x, const detail::MinAcc& m) { adapt(x, m, out); });
+            mark -= adapt_.half_ns();
+        }
+        vote_.advance(mark, [&](const detail::VoteElem& v, const detail::VoteAcc& a) { decide(v, a, out); });
     }
 
     template <class Out>
     void flush(Out&& out) {
         stat_.flush([&](const detail::ImuElem& c, const StatAcc& acc) { vote(c, acc, out); });
+        adapt_.flush([&](const detail::StatElem& e, const detail::MinAcc& m) { adapt(e, m, out); });
         vote_.flush([&](const detail::VoteElem& v, const detail::VoteAcc& a) { decide(v, a, out); });
     }
 
@@ -150,7 +195,22 @@ private:
         detail::VoteElem v;
         v.t_ns = c.t_ns;
         v.stance = test(c, v.statistic);
-        vote_.push(v, [&](const detail::VoteElem& e, const detail::VoteAcc& a) { decide(e, a, out); });
+        if (!adaptive_) {
+            vote_.push(v, [&](const detail::VoteElem& e, const detail::VoteAcc& a) { decide(e, a, out); });
+            return;
+        }
+        adapt_.push(detail::StatElem{c.t_ns, v.statistic, seq_++},
+                    [&](const detail::StatElem& e, const detail::MinAcc& m) { adapt(e, m, out); });
+    }
+
+    template <class Out>
+    void adapt(const detail::StatElem& e, const detail::MinAcc& m, Out& out) {
+        detail::VoteElem v;
+        v.t_ns = e.t_ns;
+        v.statistic = e.statistic;
+        v.stance = e.statistic < shoe_.threshold ||
+                   (e.statistic < shoe_.adaptive_max && e.statistic <= shoe_.adaptive_ratio * m.min());
+        vote_.push(v, [&](const detail::VoteElem& x, const detail::VoteAcc& a) { decide(x, a, out); });
     }
 
     template <class Out>
@@ -165,7 +225,10 @@ private:
     MultiConditionConfig multi_{};
     ShoeConfig shoe_{};
     CentredWindow<detail::ImuElem, StatAcc> stat_;
+    CentredWindow<detail::StatElem, detail::MinAcc> adapt_;
     CentredWindow<detail::VoteElem, detail::VoteAcc> vote_;
+    bool adaptive_ = false;
+    uint64_t seq_ = 0;
     const StatAcc* acc_view_ = nullptr;
 };
 
