@@ -227,8 +227,8 @@ TEST_CASE("run summary JSON") {
     CHECK(s["engine"]["version"] == "0.1.0");
     CHECK(s["samples"]["imu"] == 100);
     CHECK(s["steps"] == 14);
-    CHECK(s["distance_m"].get<double>() == doctest::Approx(14 * 1.4));
-    CHECK(s["track_length_m"].get<double>() == doctest::Approx(20.0));
+    CHECK(s["distance_m"].get<double>() == doctest::Approx(20.0));  // horizontal length of the track
+    CHECK(s["stride_length_sum_m"].get<double>() == doctest::Approx(14 * 1.4));
     CHECK(s["duration_s"].get<double>() == doctest::Approx(20.0));
     CHECK(s["floors"] == nlohmann::json::array({0, 1}));
     CHECK(s["warnings"][0] == "one warning");
