@@ -59,6 +59,8 @@ TEST_CASE("IPIN logfile: streams merged by time, hPa, POSI as ground truth") {
     CHECK(log.gnss[0].vel_enu_mps[0] == doctest::Approx(1.2));  // bearing 90 deg: east
     CHECK(std::fabs(log.gnss[0].vel_enu_mps[1]) < 1e-9);
     CHECK(log.gnss[0].h_accuracy_m == doctest::Approx(5.0));
+    CHECK(log.gnss[0].header.flags == PN_GNSS_FLAG_HAS_VELOCITY);
+    CHECK(log.gnss[0].header.type == PN_REC_GNSS);
     CHECK(log.gnss[0].utc_ns == 1700000000500000000LL);
     REQUIRE(log.truth.size() == 2);
     CHECK(log.truth[0].x_m == doctest::Approx(0.0));
@@ -147,4 +149,79 @@ TEST_CASE("format names and forced formats") {
     options.format = "no-such-format";
     CHECK_THROWS_WITH_AS(read_sensor_file(path, options), doctest::Contains("unknown format name"), ReadError);
     CHECK(detect_format(path) == "pednav-csv");
+}
+
+TEST_CASE("canonical CSV: separate rows of different streams at the same time are all kept") {
+    const std::string dir = temp_dir();
+    const std::string text =
+        "t,ax,ay,az,gx,gy,gz,mx,my,mz\n"
+        "0.00,0,0,9.8,0,0,0,,,\n"
+        "0.00,,,,,,,20,0,-40\n"
+        "0.01,0,0,9.8,0,0,0,,,\n"
+        "0.01,0,0,9.8,0,0,0,,,\n";  // a real duplicate of the IMU stream
+    const SensorLog log = read_sensor_file(write_file(dir, "sparse.csv", text));
+    CHECK(log.imu.size() == 2);
+    CHECK(log.mag.size() == 1);
+    CHECK(has_issue(log, 5, "1 samples with a repeated timestamp dropped in accel/gyro"));
+    const auto records = merged_records(log);
+    REQUIRE(records.size() == 3);
+    CHECK(records[0]->type == PN_REC_IMU);
+    CHECK(records[1]->type == PN_REC_MAG);
+}
+
+TEST_CASE("MicroStrain layout B: a row flagged invalid is skipped") {
+    const std::string dir = temp_dir();
+    const std::string d = "inertial-1.2:";
+    std::string header = "Time";
+    for (const char* c : {"estCompensatedAccelX", "estCompensatedAccelY", "estCompensatedAccelZ", "estAngularRateX",
+                          "estAngularRateY", "estAngularRateZ"}) {
+        header += "," + d + c + "," + d + c + ":valid";
+    }
+    std::string text = header + "\n";
+    text += "0,1,1,2,1,-9.8,1,0.1,1,0.2,1,0.3,1\n";
+    text += "0.004,1,1,2,1,-9.8,1,0.1,0,0.2,1,0.3,1\n";  // gyro x not valid
+    text += "0.008,1,1,2,1,-9.8,1,0.1,1,0.2,1,0.3,1\n";
+    const SensorLog log = read_sensor_file(write_file(dir, "ms.csv", text));
+    CHECK(log.format == "microstrain-sensorconnect-b");
+    REQUIRE(log.imu.size() == 2);
+    CHECK(has_issue(log, 3, "flagged invalid by the sensor (inertial-1.2:estAngularRateX:valid)"));
+    // Forward-right-down to forward-left-up: (x, -y, -z).
+    CHECK(log.imu[0].accel_mps2[0] == doctest::Approx(1.0));
+    CHECK(log.imu[0].accel_mps2[1] == doctest::Approx(-2.0));
+    CHECK(log.imu[0].accel_mps2[2] == doctest::Approx(9.8));
+    CHECK(log.imu[0].gyro_radps[2] == doctest::Approx(-0.3));
+}
+
+TEST_CASE("Xsens: PacketCounter / rate, unwrapped at 65536; a 10 s gap is reported") {
+    const std::string dir = temp_dir();
+    std::string text = "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n";
+    for (int c : {65533, 65534, 65535, 0, 1, 1001}) {
+        text += std::to_string(c) + ".0\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n";
+    }
+    const SensorLog log = read_sensor_file(write_file(dir, "wrap.txt", text));
+    CHECK(log.format == "xsens-mtw-tsv");
+    REQUIRE(log.imu.size() == 6);
+    CHECK(log.imu[0].header.t_ns == 655330000000LL);
+    CHECK(log.imu[3].header.t_ns == 655360000000LL);
+    CHECK(log.imu[5].header.t_ns == 665370000000LL);
+    CHECK(has_issue(log, 8, "gap of 10.000 s in accel/gyro"));
+    CHECK(log.stream("accel")->gaps == 1);
+}
+
+TEST_CASE("x-io CSV: deg/s and g converted, a repeated row dropped") {
+    const std::string dir = temp_dir();
+    const std::string text =
+        "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),"
+        "Accelerometer Y (g),Accelerometer Z (g)\n"
+        "0,180,0,0,0,0,1\n"
+        "0.0025,180,0,0,0,0,1\n"
+        "0.0025,180,0,0,0,0,1\n"
+        "0.005,90,0,0,0,0.5,1\n";
+    const SensorLog log = read_sensor_file(write_file(dir, "xio.csv", text));
+    CHECK(log.format == "xio-ngimu-csv");
+    REQUIRE(log.imu.size() == 3);
+    CHECK(log.imu[0].gyro_radps[0] == doctest::Approx(M_PI));
+    CHECK(log.imu[2].gyro_radps[0] == doctest::Approx(M_PI / 2));
+    CHECK(log.imu[2].accel_mps2[1] == doctest::Approx(0.5 * 9.80665));
+    CHECK(has_issue(log, 4, "1 samples with a repeated timestamp dropped"));
 }

@@ -144,7 +144,9 @@ void LogBuilder::add_baro(size_t line, double t_s, double p_pa, double temp_c) {
 }
 
 void LogBuilder::add_gnss(size_t line, double t_s, pn_gnss_t fix) {
+    const uint32_t flags = fix.header.flags;
     init_header(fix, PN_REC_GNSS, seconds_to_ns(t_s));
+    fix.header.flags = flags;
     log_.gnss.push_back(fix);
     times_[kGnss].push_back(t_s);
     lines_[kGnss].push_back(line);

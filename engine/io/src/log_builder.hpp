@@ -50,7 +50,7 @@ public:
     void add_gyro(size_t line, double t_s, const double gyro_radps[3]);
     void add_mag(size_t line, double t_s, const double mag_ut[3]);
     void add_baro(size_t line, double t_s, double pressure_pa, double temperature_c);
-    void add_gnss(size_t line, double t_s, pn_gnss_t fix);
+    void add_gnss(size_t line, double t_s, pn_gnss_t fix);  // keeps fix.header.flags
     void add_truth(size_t line, const TruthPoint& point);
 
     void set_units(StreamId stream, const std::string& found, const std::string& converted);

@@ -183,11 +183,8 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
                 continue;
             }
             if (!builder.accept_time(clock, r.line, r.app_s, stream_bit(kGnss))) continue;
-            pn_gnss_t copy = fix;
-            copy.header.flags = speed > 0 || bearing_rad != 0 ? PN_GNSS_FLAG_HAS_VELOCITY : 0u;
-            const uint32_t flags = copy.header.flags;
-            builder.add_gnss(r.line, r.app_s, copy);
-            log.gnss.back().header.flags = flags;
+            fix.header.flags = speed > 0 || bearing_rad != 0 ? PN_GNSS_FLAG_HAS_VELOCITY : 0u;
+            builder.add_gnss(r.line, r.app_s, fix);
         }
         builder.set_units(kGnss, "deg, m", "deg, m");
     }

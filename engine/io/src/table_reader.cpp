@@ -79,7 +79,7 @@ void read_table(const TextFile& file, const TableSpec& spec, LogBuilder& builder
     if (spec.mag.present()) present |= stream_bit(kMag);
     if (spec.pressure_col >= 0) present |= stream_bit(kPressure);
 
-    Clock clock("");
+    Clock clock(""), imu_clock("accel/gyro"), mag_clock("mag"), pressure_clock("pressure");
     std::vector<std::string_view> fields;
     double last_raw_time = 0.0, wrap_offset = 0.0;
     bool have_raw_time = false;
@@ -159,9 +159,17 @@ void read_table(const TextFile& file, const TableSpec& spec, LogBuilder& builder
         const double unwrapped = raw_time + wrap_offset;
         const double t_s = spec.time_kind == TableSpec::TimeKind::kCounter ? unwrapped / spec.counter_rate_hz
                                                                             : unwrapped * spec.time_scale;
-        unsigned row_streams = (has_imu ? kImuBits : 0u) | (has_mag ? stream_bit(kMag) : 0u) |
-                               (has_p ? stream_bit(kPressure) : 0u);
-        if (!builder.accept_time(clock, line_no, t_s, row_streams)) continue;
+        if (spec.empty_cells_mean_absent) {
+            // Sparse multi-rate rows: each stream keeps its own time order.
+            if (has_imu) has_imu = builder.accept_time(imu_clock, line_no, t_s, kImuBits);
+            if (has_mag) has_mag = builder.accept_time(mag_clock, line_no, t_s, stream_bit(kMag));
+            if (has_p) has_p = builder.accept_time(pressure_clock, line_no, t_s, stream_bit(kPressure));
+            if (!has_imu && !has_mag && !has_p) continue;
+        } else {
+            const unsigned row_streams = (has_imu ? kImuBits : 0u) | (has_mag ? stream_bit(kMag) : 0u) |
+                                         (has_p ? stream_bit(kPressure) : 0u);
+            if (!builder.accept_time(clock, line_no, t_s, row_streams)) continue;
+        }
         have_raw_time = true;
         last_raw_time = unwrapped;
         if (has_imu) builder.add_imu(line_no, t_s, a, g);
