@@ -69,6 +69,7 @@ private:
         c.declination_deg = p.number("declination_deg", c.declination_deg, -180.0, 180.0);
         c.initial_heading_deg = p.number("initial_heading_deg", c.initial_heading_deg, -360.0, 360.0);
         c.gyro_bias_from_still = p.boolean("gyro_bias_from_still", c.gyro_bias_from_still);
+        c.bias_still_max_sd_radps = p.number("bias_still_max_sd_radps", c.bias_still_max_sd_radps, 0.0, 10.0);
         c.coning = p.boolean("coning", c.coning);
         c.max_dt_s = p.number("max_dt_s", c.max_dt_s, 1e-4, 10.0);
         return c;

@@ -7,6 +7,7 @@ namespace pednav::foot {
 void Strapdown::reset_still() {
     sum_a_.setZero();
     sum_w_.setZero();
+    sum_w2_.setZero();
     n_still_ = 0;
     sum_m_.setZero();
     n_mag_ = 0;
@@ -25,7 +26,11 @@ void Strapdown::align(int64_t /*t_ns*/) {
         }
     }
     q_ = level_attitude(f, heading);
-    if (cfg_.gyro_bias_from_still && n_still_ > 0) bias_ = sum_w_ / n_still_;
+    if (cfg_.gyro_bias_from_still && n_still_ > 1) {
+        const Vec3 mean = sum_w_ / n_still_;
+        const double var = (sum_w2_ / n_still_ - mean.cwiseProduct(mean)).sum();
+        if (var < cfg_.bias_still_max_sd_radps * cfg_.bias_still_max_sd_radps) bias_ = mean;
+    }
     aligned_ = true;
 }
 
@@ -42,6 +47,7 @@ bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
             if (n_still_ == 0) t_still_start_ = t_ns;
             sum_a_ += a;
             sum_w_ += w;
+            sum_w2_ += w.cwiseProduct(w);
             n_still_ += 1;
             t_still_last_ = t_ns;
             if ((t_ns - t_still_start_) * 1e-9 >= cfg_.align_still_s) align(t_ns);
@@ -58,6 +64,7 @@ bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
                 t_still_start_ = t_ns;
                 sum_a_ += a;
                 sum_w_ += w;
+                sum_w2_ += w.cwiseProduct(w);
                 n_still_ = 1;
                 t_still_last_ = t_ns;
             }

@@ -32,7 +32,8 @@ struct StrapdownConfig {
     double mag_max_ut = 100.0;
     double declination_deg = 0.0;         // east positive: true = magnetic + declination
     double initial_heading_deg = 0.0;     // when no trusted magnetometer; clockwise from north
-    bool gyro_bias_from_still = true;     // initial gyro bias = mean rate of the still period
+    bool gyro_bias_from_still = true;     // initial gyro bias = mean rate of the still period...
+    double bias_still_max_sd_radps = 0.01;  // ...when the rate's sd over it is below this (truly still)
     bool coning = true;                   // second-order coning term
     double max_dt_s = 0.1;                // longer gaps are integrated as this
 };
@@ -74,6 +75,7 @@ private:
     bool first_seen_ = false;
     Vec3 sum_a_ = Vec3::Zero();
     Vec3 sum_w_ = Vec3::Zero();
+    Vec3 sum_w2_ = Vec3::Zero();
     double n_still_ = 0;
     Vec3 sum_m_ = Vec3::Zero();
     double n_mag_ = 0;

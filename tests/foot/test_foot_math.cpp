@@ -1,0 +1,309 @@
+// Unit tests of the foot plugins' shared math (pednav_foot_common): rotations,
+// alignment, magnetometer heading, the EKF's covariance algebra, and the
+// stance detectors on synthetic signals at several rates.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include <pednav_foot/ekf15.hpp>
+#include <pednav_foot/so3.hpp>
+#include <pednav_foot/stance_detector.hpp>
+#include <pednav_foot/strapdown.hpp>
+
+using namespace pednav::foot;
+
+namespace {
+constexpr double kDeg = M_PI / 180.0;
+
+// R_enu_from_body from heading (clockwise from north), pitch (nose up) and roll.
+Mat3 attitude(double heading, double pitch, double roll) {
+    const double yaw = M_PI / 2 - heading;  // ENU yaw of the body x axis
+    return (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(-pitch, Vec3::UnitY()) *
+            Eigen::AngleAxisd(roll, Vec3::UnitX()))
+        .toRotationMatrix();
+}
+}  // namespace
+
+TEST_CASE("skew matrix is the cross product (foot-imu-zupt-zaru-ekf eq. (9) as corrected)") {
+    const Vec3 w(0.3, -1.2, 2.5), v(-0.7, 0.4, 1.1);
+    CHECK((skew(w) * v - w.cross(v)).norm() < 1e-15);
+    CHECK((skew(w) + skew(w).transpose()).norm() == 0.0);
+}
+
+TEST_CASE("Cayley transform is a rotation and matches the exponential to second order") {
+    for (double a : {1e-3, 1e-2, 0.1}) {
+        const Vec3 r = a * Vec3(0.3, -0.5, 0.8).normalized();
+        const Mat3 c = cayley(r);
+        CHECK((c * c.transpose() - Mat3::Identity()).norm() < 1e-14);
+        const Mat3 e = quat_exp(r).toRotationMatrix();
+        // The Pade (1,1) error is (|r|^3)/12.
+        CHECK((c - e).norm() < a * a * a / 6.0 + 1e-15);
+    }
+}
+
+TEST_CASE("quaternion exp and log are inverse, also near zero") {
+    for (double a : {0.0, 1e-9, 1e-4, 0.5, 3.0}) {
+        const Vec3 r = a * Vec3(-0.2, 0.9, 0.4).normalized();
+        CHECK((quat_log(quat_exp(r)) - r).norm() < 1e-12);
+        CHECK(std::abs(quat_exp(r).norm() - 1.0) < 1e-15);
+    }
+}
+
+TEST_CASE("level alignment and tilt-compensated magnetometer heading at several attitudes") {
+    const double g = 9.81;
+    const double dip = 64 * kDeg, field = 48.0;
+    const Vec3 m_enu(0.0, field * std::cos(dip), -field * std::sin(dip));  // magnetic north, pointing down
+    int cases = 0;
+    for (double heading : {0.0, 37.0, 135.0, -100.0, 179.0})
+        for (double pitch : {0.0, 20.0, -35.0, 60.0})
+            for (double roll : {0.0, 25.0, -50.0, 170.0}) {  // 170 deg: the sensor upside down (z down)
+                const Mat3 R = attitude(heading * kDeg, pitch * kDeg, roll * kDeg);
+                const Vec3 f_body = R.transpose() * Vec3(0, 0, g);
+                const Vec3 m_body = R.transpose() * m_enu;
+                const Quat q(R);
+                const double psi_true = heading_of(q);
+                CHECK(std::abs(wrap_pi(magnetic_heading(f_body, m_body) - psi_true)) < 1e-9);
+                const Quat qa = level_attitude(f_body, psi_true);
+                CHECK(std::abs(wrap_pi(heading_of(qa) - psi_true)) < 1e-9);
+                CHECK((qa.toRotationMatrix() - R).norm() < 1e-9);
+                ++cases;
+            }
+    CHECK(cases == 80);
+}
+
+TEST_CASE("strapdown aligns on the still period and takes the heading from a trusted magnetometer") {
+    StrapdownConfig c;
+    c.declination_deg = 2.0;
+    Strapdown sd(c);
+    const Mat3 R = attitude(70 * kDeg, 15 * kDeg, -40 * kDeg);
+    const Vec3 f = R.transpose() * Vec3(0, 0, 9.6);  // a sensor reading 0.98 g
+    const Vec3 bias(0.01, -0.02, 0.005);
+    const Vec3 m = R.transpose() * Vec3(0, 20.0, -40.0);
+    bool aligned = false;
+    int64_t t = 0;
+    for (int k = 0; k < 300 && !aligned; ++k, t += 5000000) {
+        sd.on_mag(t, m);
+        aligned = sd.on_imu(t, f, bias);
+    }
+    REQUIRE(aligned);
+    CHECK(sd.heading_from_magnetometer());
+    CHECK(std::abs(wrap_pi(heading_of(sd.q()) - (70 + 2) * kDeg)) < 1e-6);
+    CHECK((sd.gyro_bias() - bias).norm() < 1e-12);
+    // Field strength outside the trusted band: heading from the parameter.
+    StrapdownConfig c2;
+    c2.initial_heading_deg = -30.0;
+    Strapdown sd2(c2);
+    aligned = false;
+    t = 0;
+    for (int k = 0; k < 300 && !aligned; ++k, t += 5000000) {
+        sd2.on_mag(t, m * 0.01);
+        aligned = sd2.on_imu(t, f, bias);
+    }
+    REQUIRE(aligned);
+    CHECK_FALSE(sd2.heading_from_magnetometer());
+    CHECK(std::abs(wrap_pi(heading_of(sd2.q()) + 30 * kDeg)) < 1e-6);
+}
+
+TEST_CASE("attitude integration with mid-interval rates and coning is exact for a coning motion") {
+    // Classic coning: the body rotates about a cone; the exact attitude is known.
+    const double rate = 400.0, dt = 1.0 / rate;
+    const double cone = 0.3, spin = 2 * M_PI * 2.0;  // half-angle (rad), cone frequency (rad/s)
+    auto q_true = [&](double t) {
+        // q(t) = exp(cone * [cos(spin t), sin(spin t), 0]) about a rotating axis, relative to the start.
+        return quat_exp(cone * Vec3(std::cos(spin * t), std::sin(spin * t), 0.0));
+    };
+    auto body_rate = [&](double t) {
+        // Numerical body rate from the exact attitude: w = 2 Im(q^-1 dq/dt).
+        const double h = 1e-6;
+        const Quat d = q_true(t).conjugate() * q_true(t + h);
+        const Quat d0 = q_true(t - h).conjugate() * q_true(t);
+        return Vec3((quat_log(d) + quat_log(d0)) / (2 * h));
+    };
+    StrapdownConfig c;
+    Strapdown sd(c);
+    sd.set_attitude(q_true(0.0));
+    const Vec3 f(0, 0, 9.81);
+    int64_t t_ns = 0;
+    sd.on_imu(t_ns, f, body_rate(0.0));
+    for (int k = 1; k <= static_cast<int>(2.0 * rate); ++k) {
+        t_ns = static_cast<int64_t>(std::llround(k * dt * 1e9));
+        sd.on_imu(t_ns, f, body_rate(k * dt));
+    }
+    const double err = quat_log(sd.q().conjugate() * q_true(2.0)).norm();
+    // Two seconds of 0.3 rad coning at 2 Hz (peak rate 3.8 rad/s): drift below 0.05 deg.
+    CHECK(err < 0.05 * kDeg);
+}
+
+TEST_CASE("EKF covariance stays exactly symmetric, and the Joseph update matches the textbook one") {
+    Ekf15 ekf;
+    double d[15];
+    for (int i = 0; i < 15; ++i) d[i] = 0.01 * (i + 1);
+    ekf.reset_covariance(d);
+    Ekf15::Noise q{1e-4, 1e-3, 1e-8, 1e-6};
+    const Mat3 R = attitude(0.4, 0.3, -0.2);
+    for (int k = 0; k < 200; ++k) ekf.propagate(0.005, R, Vec3(1.0, -2.0, 9.81), q);
+    for (int i = 0; i < 15; ++i)
+        for (int j = 0; j < 15; ++j) REQUIRE(ekf.P(i, j) == ekf.P(j, i));
+    // Textbook update for H = e_9 on a copy.
+    Eigen::Matrix<double, 15, 15> P;
+    for (int i = 0; i < 15; ++i)
+        for (int j = 0; j < 15; ++j) P(i, j) = ekf.P(i, j);
+    const double r = 1e-4;
+    const Eigen::Matrix<double, 15, 1> K = P.col(9) / (P(9, 9) + r);
+    const Eigen::Matrix<double, 15, 15> P_ref = P - K * P.row(9);
+    ekf.update_scalar(9, 0.1, r);
+    double max_diff = 0;
+    for (int i = 0; i < 15; ++i)
+        for (int j = 0; j < 15; ++j) {
+            REQUIRE(ekf.P(i, j) == ekf.P(j, i));
+            max_diff = std::max(max_diff, std::abs(ekf.P(i, j) - P_ref(i, j)));
+        }
+    CHECK(max_diff < 1e-12);
+    CHECK(std::abs(ekf.x()[9] - K(9) * 0.1) < 1e-15);
+    // Positive semi-definite.
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 15, 15>> es(P_ref);
+    CHECK(es.eigenvalues().minCoeff() > -1e-12);
+}
+
+// ---------------------------------------------------------------- detectors
+
+namespace {
+struct Synthetic {
+    std::vector<int64_t> t_ns;
+    std::vector<Vec3> a, w;
+    std::vector<int> stance;
+};
+
+// Walking or running: stance (foot flat, gravity at `g_read` along a tilted
+// axis, plus the small roll of a real foot) then swing (large rotation and
+// acceleration), with white noise.
+Synthetic gait(double rate_hz, double stance_s, double swing_s, double g_read, int cycles, double roll_rate,
+               double swing_scale, uint32_t seed) {
+    Synthetic s;
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> n01(0.0, 1.0);
+    const Vec3 up = Vec3(0.5, 0.2, -0.84).normalized();  // tilted, z down
+    const double period = stance_s + swing_s;
+    const int n = static_cast<int>((0.8 + cycles * period + 0.5 * stance_s) * rate_hz);  // ends mid-stance
+    for (int k = 0; k < n; ++k) {
+        const double t = k / rate_hz;
+        const double tc = t < 0.8 ? -1.0 : std::fmod(t - 0.8, period);
+        const bool st = tc < 0 || tc < stance_s;
+        Vec3 a = g_read * up, w = Vec3::Zero();
+        if (!st) {
+            const double ph = (tc - stance_s) / swing_s;  // 0..1
+            const double env = std::sin(M_PI * ph);
+            w = swing_scale * env * Vec3(1.0, 5.0 * std::sin(2 * M_PI * ph), 0.8);
+            a += swing_scale * env * Vec3(12.0 * std::sin(2 * M_PI * ph), 3.0, 8.0 * std::cos(2 * M_PI * ph));
+        } else if (tc >= 0) {
+            w = roll_rate * std::sin(M_PI * tc / stance_s) * Vec3(0.0, 1.0, 0.2);  // heel-to-toe roll
+        }
+        a += 0.05 * Vec3(n01(rng), n01(rng), n01(rng));
+        w += 0.01 * Vec3(n01(rng), n01(rng), n01(rng));
+        s.t_ns.push_back(static_cast<int64_t>(std::llround(t * 1e9)));
+        s.a.push_back(a);
+        s.w.push_back(w);
+        s.stance.push_back(st ? 1 : 0);
+    }
+    return s;
+}
+
+int segments_of(const std::vector<int>& stance) {
+    int n = 0, prev = 0;
+    for (int s : stance) {
+        n += s && !prev;
+        prev = s;
+    }
+    return n;
+}
+
+struct DetectionScore {
+    int segments = 0;
+    double agreement = 0;  // share of samples whose decision equals the truth
+    bool latency_kept = true;
+    size_t outputs = 0;
+};
+
+DetectionScore detect(StanceDetector& d, const Synthetic& s) {
+    std::vector<StanceDecision> out;
+    DetectionScore sc;
+    for (size_t k = 0; k < s.t_ns.size(); ++k) {
+        const size_t before = out.size();
+        d.push(s.t_ns[k], s.a[k].data(), s.w[k].data(), [&](const StanceDecision& x) { out.push_back(x); });
+        // Every decision about t is out once input t + latency is in, not later.
+        for (size_t j = before; j < out.size(); ++j)
+            if (k > 0 && s.t_ns[k - 1] >= out[j].t_ns + d.latency_ns()) sc.latency_kept = false;
+        const size_t due = static_cast<size_t>(
+            std::upper_bound(s.t_ns.begin(), s.t_ns.end(), s.t_ns[k] - d.latency_ns()) - s.t_ns.begin());
+        if (out.size() < due) sc.latency_kept = false;
+    }
+    d.flush([&](const StanceDecision& x) { out.push_back(x); });
+    sc.outputs = out.size();
+    int agree = 0, prev = 0;
+    for (size_t k = 0; k < out.size() && k < s.t_ns.size(); ++k) {
+        REQUIRE(out[k].t_ns == s.t_ns[k]);
+        agree += (out[k].stance ? 1 : 0) == s.stance[k];
+        if (out[k].stance && !prev) ++sc.segments;
+        prev = out[k].stance;
+    }
+    sc.agreement = static_cast<double>(agree) / s.t_ns.size();
+    return sc;
+}
+}  // namespace
+
+TEST_CASE("stance detectors give the same decisions at 100, 200, 250 and 400 Hz on a 0.97 g sensor") {
+    for (double rate : {100.0, 200.0, 250.0, 400.0}) {
+        CAPTURE(rate);
+        const Synthetic walk = gait(rate, 0.35, 0.65, 0.97 * 9.80665, 12, 0.3, 1.0, 7);
+        MultiConditionConfig mc;
+        StanceDetector multi(mc, 1000.0);
+        const DetectionScore a = detect(multi, walk);
+        CHECK(a.outputs == walk.t_ns.size());
+        CHECK(a.latency_kept);
+        const int truth = segments_of(walk.stance);
+        CHECK(truth == 13);  // the opening still period runs into the first stance
+        CHECK(a.segments == truth);
+        CHECK(a.agreement > 0.9);
+        ShoeConfig sc;
+        StanceDetector shoe(sc, 1000.0);
+        const DetectionScore b = detect(shoe, walk);
+        CHECK(b.outputs == walk.t_ns.size());
+        CHECK(b.latency_kept);
+        CHECK(b.segments == truth);
+        CHECK(b.agreement > 0.9);
+    }
+}
+
+TEST_CASE("running: the adaptive SHOE detector finds every brief, rolling stance") {
+    for (double rate : {100.0, 200.0, 400.0}) {
+        CAPTURE(rate);
+        // 0.12 s stances with a 1.2 rad/s heel-to-toe roll, violent swings.
+        const Synthetic run = gait(rate, 0.12, 0.55, 9.80665, 15, 1.2, 2.5, 11);
+        ShoeConfig sc;
+        StanceDetector shoe(sc, 1000.0);
+        const DetectionScore b = detect(shoe, run);
+        CHECK(b.latency_kept);
+        const int truth = segments_of(run.stance);
+        CHECK(b.segments == truth);
+        // The paper's detector with its printed thresholds misses them (|w| > 1 rad/s).
+        MultiConditionConfig mc;
+        StanceDetector multi(mc, 1000.0);
+        CHECK(detect(multi, run).segments < truth);
+    }
+}
+
+TEST_CASE("stance detector windows are in seconds: latency does not depend on the rate") {
+    MultiConditionConfig mc;
+    mc.window_s = 0.2;
+    mc.median_window_s = 0.1;
+    StanceDetector a(mc, 100.0), b(mc, 400.0);
+    CHECK(a.latency_ns() == 150000000);
+    CHECK(b.latency_ns() == 150000000);
+    ShoeConfig sc;
+    StanceDetector s(sc, 250.0);
+    CHECK(s.latency_ns() == static_cast<int64_t>(std::llround((sc.window_s + sc.adaptive_window_s + sc.median_window_s) * 0.5e9)));
+}
