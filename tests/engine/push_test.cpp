@@ -291,3 +291,23 @@ TEST_CASE("set_start moves the track; the map matcher adds the floor from the ba
     CHECK(pos[0].position.floor == 0);
     CHECK(pos[4].position.floor == 1);
 }
+
+TEST_CASE("push refuses records that are not inputs or are malformed") {
+    Engine e(steps_config(), {fixture_dir("good")});
+    pn_error_t err = make_error();
+    pn_position_t p;
+    std::memset(&p, 0, sizeof p);
+    p.header.struct_size = sizeof p;
+    p.header.type = PN_REC_POSITION;
+    p.header.t_ns = kT0Ns;
+    CHECK(pn_engine_push(e.get(), &p.header, &err) == PN_E_INVALID_ARGUMENT);
+    pn_imu_t s = imu_sample(0);
+    s.header.struct_size = sizeof(pn_record_header_t);  // truncated
+    CHECK(pn_engine_push(e.get(), &s.header, &err) == PN_E_INVALID_ARGUMENT);
+    CHECK(pn_engine_push(e.get(), nullptr, &err) == PN_E_INVALID_ARGUMENT);
+    CHECK(pn_engine_push_imu(nullptr, &s, 1, sizeof s, nullptr) == PN_E_INVALID_ARGUMENT);
+    CHECK(e.describe()["counters"]["records_in"] == 0);
+    // A good sample still goes in afterwards.
+    s = imu_sample(0);
+    CHECK(pn_engine_push(e.get(), &s.header, &err) == PN_OK);
+}
