@@ -76,7 +76,50 @@ std::string unit_quaternion(const char* field, const double* q) {
 
 }  // namespace
 
+namespace {
+
+bool all_finite(const double* v, int n) {
+    bool ok = true;
+    for (int i = 0; i < n; ++i) ok &= std::isfinite(v[i]);
+    return ok;
+}
+
+bool cov_ok(const double* c) { return all_finite(c, 9) && c[0] >= 0 && c[4] >= 0 && c[8] >= 0; }
+
+// The common case without building any string; check_record_values explains.
+bool values_ok(const pn_record_header_t* h) {
+    switch (h->type) {
+        case PN_REC_IMU: {
+            auto* r = reinterpret_cast<const pn_imu_t*>(h);
+            return all_finite(r->accel_mps2, 3) && all_finite(r->gyro_radps, 3);
+        }
+        case PN_REC_MAG: return all_finite(reinterpret_cast<const pn_mag_t*>(h)->mag_ut, 3);
+        case PN_REC_GAIT_PHASE: return std::isfinite(reinterpret_cast<const pn_gait_phase_t*>(h)->statistic);
+        case PN_REC_ATTITUDE: {
+            auto* r = reinterpret_cast<const pn_attitude_t*>(h);
+            const double* q = r->q_enu_from_body;
+            const double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+            return all_finite(q, 4) && std::fabs(n2 - 1.0) < 1.9e-3 && std::isfinite(r->heading_rad) &&
+                   all_finite(r->gyro_bias_radps, 3) && cov_ok(r->cov_attitude_rad2);
+        }
+        case PN_REC_ATTITUDE_CORRECTION: {
+            auto* r = reinterpret_cast<const pn_attitude_correction_t*>(h);
+            return all_finite(r->rotation_enu_rad, 3) && all_finite(r->gyro_bias_delta_radps, 3);
+        }
+        case PN_REC_POSITION: {
+            auto* r = reinterpret_cast<const pn_position_t*>(h);
+            return all_finite(r->pos_enu_m, 3) &&
+                   (!(r->header.flags & PN_POSITION_FLAG_HAS_VELOCITY) || all_finite(r->vel_enu_mps, 3)) &&
+                   std::isfinite(r->heading_rad) && cov_ok(r->cov_enu_m2);
+        }
+        default: return false;  // rare types: take the explaining path
+    }
+}
+
+}  // namespace
+
 std::string check_record_values(const pn_record_header_t* h) {
+    if (values_ok(h)) return {};
     switch (h->type) {
         case PN_REC_IMU: {
             auto* r = reinterpret_cast<const pn_imu_t*>(h);

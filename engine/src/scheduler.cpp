@@ -139,12 +139,13 @@ void Scheduler::push(const pn_record_header_t* r) {
     for (auto& s : stages_) s->flushed = false;
     ++records_in_;
     if (queue_wanted_[0] & PN_REC_MASK(r->type)) queues_[0].push(r);
-    // Release app records strictly before the newest time (see header).
+    // Release app records strictly before the newest time (see header); a
+    // record at the same time as the previous one releases nothing new.
     if (r->t_ns > last_app_t_ns_) {
         app_limit_ns_ = r->t_ns - 1;
         last_app_t_ns_ = r->t_ns;
+        drain();
     }
-    drain();
 }
 
 void Scheduler::flush() {
