@@ -94,7 +94,16 @@ bool values_ok(const pn_record_header_t* h) {
             return all_finite(r->accel_mps2, 3) && all_finite(r->gyro_radps, 3);
         }
         case PN_REC_MAG: return all_finite(reinterpret_cast<const pn_mag_t*>(h)->mag_ut, 3);
+        case PN_REC_BARO: {
+            const double p = reinterpret_cast<const pn_baro_t*>(h)->pressure_pa;
+            return std::isfinite(p) && p > 0;
+        }
         case PN_REC_GAIT_PHASE: return std::isfinite(reinterpret_cast<const pn_gait_phase_t*>(h)->statistic);
+        case PN_REC_STRIDE: {
+            auto* r = reinterpret_cast<const pn_stride_t*>(h);
+            return all_finite(r->displacement_enu_m, 3) && std::isfinite(r->length_m) &&
+                   std::isfinite(r->heading_change_rad) && cov_ok(r->cov_displacement_m2);
+        }
         case PN_REC_ATTITUDE: {
             auto* r = reinterpret_cast<const pn_attitude_t*>(h);
             const double* q = r->q_enu_from_body;
