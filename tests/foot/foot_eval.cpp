@@ -178,15 +178,21 @@ IpolScore score_ipol(const std::string& trial, const std::string& foot, const st
     const std::string base = data_dir() + "/ipol-gait-waist-feet/" + trial;
     const nlohmann::json meta = load_json(base + ".json");
     const ReplayResult r = run_file(base + "_" + foot + ".txt", config_json);
-    const double rate = 100.0;
-    const auto tb = meta.at("TrialBoundaries");
-    const auto ub = meta.at("UTurnBoundaries");
-    const auto& p0 = position_at(r, tb[0].get<double>() / rate);
-    const auto& p1 = position_at(r, ub[0].get<double>() / rate);
-    const auto& p2 = position_at(r, ub[1].get<double>() / rate);
-    const auto& p3 = position_at(r, tb[1].get<double>() / rate);
-    sc.leg_out_m = hypot2(p0.pos_enu_m, p1.pos_enu_m);
-    sc.leg_back_m = hypot2(p2.pos_enu_m, p3.pos_enu_m);
+    if (r.positions.empty()) throw std::runtime_error("ipol " + sc.name + ": no positions");
+    // Out: from the start to the turnaround (the point farthest from the
+    // start); back: from there to the end. The walker stands still at both ends.
+    const double* p0 = r.positions.front().pos_enu_m;
+    size_t far = 0;
+    double far_d = 0;
+    for (size_t i = 0; i < r.positions.size(); ++i) {
+        const double d = hypot2(r.positions[i].pos_enu_m, p0);
+        if (d > far_d) {
+            far_d = d;
+            far = i;
+        }
+    }
+    sc.leg_out_m = far_d;
+    sc.leg_back_m = hypot2(r.positions[far].pos_enu_m, r.positions.back().pos_enu_m);
     sc.strides = r.strides.size();
     sc.footsteps = meta.at(foot == "lf" ? "LeftFootEvents" : "RightFootEvents").size();
     return sc;
@@ -200,6 +206,11 @@ SimScore score_sim(const SimCase& c, const std::string& config_json) {
     so.with_gnss = false;
     so.with_baro = false;
     for (int i = 0; i < 3; ++i) so.mounting_rpy_deg[i] = c.mounting_rpy_deg[i];
+    sim::ImuErrorModel& m = so.imu;
+    for (double* v : {&m.accel_noise_mps2_per_rthz, &m.accel_bias_mps2, &m.accel_bias_rw_mps2_per_rts, &m.accel_scale,
+                      &m.gyro_noise_radps_per_rthz, &m.gyro_bias_radps, &m.gyro_bias_rw_radps_per_rts, &m.gyro_scale})
+        *v *= c.error_scale;
+    m.accel_bias_rw_mps2_per_rts *= c.accel_bias_walk_scale;
     const sim::SimOutput out = sim::simulate(sim::builtin_route(c.route), so);
     auto doc = nlohmann::json::parse(config_json);
     doc["imu_rate_hz"] = c.rate_hz;
@@ -232,11 +243,12 @@ SimScore score_sim(const SimCase& c, const std::string& config_json) {
         while (j + 1 < out.truth.size() && out.truth[j].t_s * 1e9 < p.header.t_ns - 1000) ++j;
         const auto& tj = out.truth[j];
         const double ez = (p.pos_enu_m[2] - a.pos_enu_m[2]) - (tj.pos_enu_m[2] - ta.pos_enu_m[2]);
+        sc.final_err_z_m = ez;
+        if (!tj.stance) continue;  // scored where the foot stands, like the paper's reference points
         sum_z += std::abs(ez);
         ++n;
-        sc.final_err_z_m = ez;
     }
-    sc.mean_err_z_m = sum_z / n;
+    sc.mean_err_z_m = n ? sum_z / n : 0.0;
     sc.final_err_z_m = std::abs(sc.final_err_z_m);
     // Horizontal error after fitting the start heading (one rotation about the start).
     double sdot = 0, scross = 0;

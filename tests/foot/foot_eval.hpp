@@ -67,7 +67,7 @@ struct SimScore {
     double closure_m = 0;        // horizontal distance between estimated start and end
     double closure_pct = 0;
     double max_err_h_m = 0;      // horizontal error against the truth, largest
-    double mean_err_z_m = 0;     // |height error| against the truth, mean over samples
+    double mean_err_z_m = 0;     // |height error| against the truth, mean over the stance samples
     double final_err_z_m = 0;    // height error at the end
     size_t strides = 0, true_strides = 0;
     size_t level = 0, stairs = 0;  // strides by class
@@ -78,6 +78,8 @@ struct SimCase {
     bool sensor_errors = true;
     uint64_t seed = 1;
     double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};
+    double error_scale = 1.0;  // multiplies every IMU error of the simulator's default model
+    double accel_bias_walk_scale = 1.0;  // and this the accelerometer bias random walk once more
 };
 SimScore score_sim(const SimCase& c, const std::string& config_json);
 

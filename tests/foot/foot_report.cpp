@@ -17,16 +17,18 @@ int main(int argc, char** argv) {
         std::printf("detector %s\n", det.c_str());
         for (const char* route : {"corridor_loop", "stairs"}) {
             if (quick) break;
-            for (bool errors : {false, true}) {
+            for (double errors : {0.0, 1.0, 5.0, -100.0, -300.0}) {
                 SimCase c;
                 c.route = route;
-                c.sensor_errors = errors;
+                c.sensor_errors = errors != 0;
+                c.error_scale = errors > 0 ? errors : 1.0;
+                c.accel_bias_walk_scale = errors < 0 ? -errors : 1.0;
                 c.rate_hz = 400;
                 c.mounting_rpy_deg[0] = 20;
                 c.mounting_rpy_deg[1] = -30;
                 c.mounting_rpy_deg[2] = 10;
                 const SimScore s = score_sim(c, cfg);
-                std::printf("sim %-13s errors %d strides %3zu/%3zu (level %zu stairs %zu) closure %.3f m %.3f %% max_h %.3f  z mean %.3f final %.3f\n",
+                std::printf("sim %-13s errors x%.0f strides %3zu/%3zu (level %zu stairs %zu) closure %.3f m %.3f %% max_h %.3f  z mean %.3f final %.3f\n",
                             route, errors, s.strides, s.true_strides, s.level, s.stairs, s.closure_m, s.closure_pct,
                             s.max_err_h_m, s.mean_err_z_m, s.final_err_z_m);
             }

@@ -29,8 +29,8 @@ struct FootInsConfig {
     bool hupt = true;
     double gravity_mps2 = 0.0;  // 0 = mean |a| over the first stance (absorbs scale errors)
     // Process noise densities.
-    double gyro_noise_radps_per_sqrthz = 0.005;
-    double accel_noise_mps2_per_sqrthz = 0.05;
+    double gyro_noise_radps_per_sqrthz = 0.002;
+    double accel_noise_mps2_per_sqrthz = 0.2;
     double gyro_bias_walk_radps_per_sqrts = 1e-5;
     double accel_bias_walk_mps2_per_sqrts = 1e-3;
     // Initial standard deviations.
@@ -41,9 +41,9 @@ struct FootInsConfig {
     double init_velocity_sd_mps = 0.01;
     // Measurement standard deviations.
     double zupt_sd_mps = 0.01;
-    double zaru_sd_radps = 0.05;
-    double zaru_max_radps = 0.2;      // ZARU only while |w - bg| is below this (a rolling foot is not still)
-    double zupt_lever_m = 0.1;        // ZUPT sd grows by this times |w - bg| (sensor ahead of the pivot)
+    double zaru_sd_radps = 0.02;
+    double zaru_max_radps = 0.1;      // ZARU only while |w - bg| is below this (a rolling foot is not still)
+    double zupt_lever_m = 0.3;        // ZUPT sd grows by this times |w - bg| (sensor ahead of the pivot)
     double hupt_sd_m = 0.01;
     // Stride segmentation and level/stairs classification.
     double min_stance_s = 0.0;        // shorter stances do not end a stride

@@ -1,0 +1,277 @@
+// The foot pipeline through the real engine and plugin loader: accuracy on
+// the shared recordings and on simulated walks with exact truth (issue 3),
+// plus the plugin contract (strict params, determinism, records).
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+#include <pednav_foot/so3.hpp>
+#include <pednav_io/sensor_log.hpp>
+#include <pednav_sim/simulate.hpp>
+
+#include "foot_eval.hpp"
+
+using namespace pednav;
+using namespace pednav::foot_eval;
+
+namespace {
+const std::string& preset() {
+    static const std::string cfg = foot_config(nlohmann::json::object(), 0.0);
+    return cfg;
+}
+std::string with_ekf(const nlohmann::json& params) { return foot_config(ekf_patch(params), 0.0); }
+}  // namespace
+
+TEST_CASE("issue 3: xio-gait-ngimu loops end near their start (causal)") {
+    for (const char* walk : {"short_walk", "long_walk"}) {
+        const XioScore s = score_xio(walk, preset());
+        CAPTURE(walk);
+        CAPTURE(s.closure_m);
+        CAPTURE(s.distance_m);
+        CHECK(s.distance_m > (std::string(walk) == "short_walk" ? 20.0 : 52.0));
+        CHECK(s.closure_pct < XIO_CLOSURE_PCT_MAX);
+    }
+}
+
+TEST_CASE("issue 3: koroglu-foot-gcp stride count equals footprints, error at footprints") {
+    for (int n : {33, 35, 39, 42, 44}) {
+        const KorogluScore s = score_koroglu(n, preset());
+        CAPTURE(n);
+        CAPTURE(s.err_m.mean);
+        CAPTURE(s.err_m.max);
+        CAPTURE(s.err_m.final);
+        CHECK(s.strides == s.footprints);
+        CHECK(s.mean_pct < (n == 35 ? KOROGLU_35_MEAN_PCT_MAX : 1.5));
+    }
+}
+
+TEST_CASE("issue 3: ipol foot files, 10 m out and 10 m back") {
+    double sum = 0;
+    int legs = 0;
+    for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"})
+        for (const char* f : {"lf", "rf"}) {
+            const IpolScore s = score_ipol(t, f, preset());
+            CAPTURE(s.name);
+            CHECK(std::abs(s.leg_out_m - 10.0) < 0.9);
+            CHECK(std::abs(s.leg_back_m - 10.0) < 0.9);
+            CHECK(std::abs(static_cast<int>(s.strides) - static_cast<int>(s.footsteps)) <= 2);
+            sum += s.leg_out_m + s.leg_back_m;
+            legs += 2;
+        }
+    CHECK(std::abs(sum / legs - 10.0) < 0.3);  // within 3 % on average over the 32 legs
+}
+
+TEST_CASE("issue 3: simulated 3 x 40 m corridor loop closes within 0.3 %") {
+    for (double rate : {100.0, 200.0, 400.0}) {
+        SimCase c;
+        c.rate_hz = rate;
+        c.mounting_rpy_deg[0] = 20;  // tilted on the shoe
+        c.mounting_rpy_deg[1] = -30;
+        c.mounting_rpy_deg[2] = 10;
+        const SimScore s = score_sim(c, preset());
+        CAPTURE(rate);
+        CAPTURE(s.closure_m);
+        CHECK(s.strides == s.true_strides);
+        CHECK(s.level == s.strides);
+        CHECK(s.closure_pct < 0.3);
+    }
+}
+
+TEST_CASE("issue 3: stairs up and down two flights, with and without HUPT") {
+    SimCase c;
+    c.route = "stairs";
+    c.rate_hz = 200;
+    c.mounting_rpy_deg[1] = 25;
+    c.error_scale = 5;  // a poor MEMS unit: 0.2 m/s^2 accelerometer and 1 deg/s gyro biases
+    const SimScore hupt = score_sim(c, preset());
+    const SimScore zupt = score_sim(c, with_ekf({{"hupt", false}}));
+    CAPTURE(hupt.final_err_z_m);
+    CAPTURE(zupt.final_err_z_m);
+    CAPTURE(hupt.mean_err_z_m);
+    CAPTURE(zupt.mean_err_z_m);
+    CHECK(hupt.strides == hupt.true_strides);
+    CHECK(hupt.stairs == 20);  // 2 x 2 flights of 10 stairs, one foot
+    CHECK(hupt.level == hupt.strides - 20);
+    CHECK(hupt.final_err_z_m < 0.3);
+    CHECK(hupt.final_err_z_m < 0.5 * zupt.final_err_z_m);
+    CHECK(hupt.mean_err_z_m < 0.6 * zupt.mean_err_z_m);
+}
+
+TEST_CASE("issue 3: HUPT cuts the mean height error on level floors by at least 80 %") {
+    for (double errors : {1.0, 5.0}) {
+        SimCase c;
+        c.error_scale = errors;
+        const SimScore hupt = score_sim(c, preset());
+        const SimScore zupt = score_sim(c, with_ekf({{"hupt", false}}));
+        CAPTURE(errors);
+        CAPTURE(hupt.mean_err_z_m);
+        CAPTURE(zupt.mean_err_z_m);
+        CHECK(hupt.level == hupt.strides);
+        CHECK(hupt.mean_err_z_m < 0.2 * zupt.mean_err_z_m);
+    }
+}
+
+// Height drift per step of the integration alone, on exact sensor data: each
+// swing of the simulated walk is integrated from the true attitude at its
+// start with zero velocity, first with end-of-interval rates (first order),
+// then the way the plugins do it (mid-interval rates with the coning term for
+// the attitude, trapezoidal velocity and position).
+namespace {
+double step_height_drift(const sim::SimOutput& out, bool mid_interval) {
+    using foot::Quat;
+    using foot::Vec3;
+    double sum = 0;
+    int steps = 0;
+    const double g = 9.80665;
+    for (size_t k = 1; k + 1 < out.truth.size(); ++k) {
+        if (!(out.truth[k - 1].stance && !out.truth[k].stance)) continue;
+        const size_t k0 = k - 1;  // last stance sample
+        const auto& t0 = out.truth[k0];
+        Quat q(t0.q_enu_from_body[0], t0.q_enu_from_body[1], t0.q_enu_from_body[2], t0.q_enu_from_body[3]);
+        Vec3 v = Vec3::Zero(), p = Vec3::Zero();
+        auto f_of = [&](size_t i) { return Vec3(out.imu[i].accel_mps2[0], out.imu[i].accel_mps2[1], out.imu[i].accel_mps2[2]); };
+        auto w_of = [&](size_t i) { return Vec3(out.imu[i].gyro_radps[0], out.imu[i].gyro_radps[1], out.imu[i].gyro_radps[2]); };
+        Vec3 fn_prev = q * f_of(k0);
+        size_t i = k0 + 1;
+        for (; i < out.truth.size() && !out.truth[i].stance; ++i) {
+            const double dt = out.truth[i].t_s - out.truth[i - 1].t_s;
+            if (mid_interval) {
+                const Vec3 w0 = w_of(i - 1), w1 = w_of(i);
+                q = q * foot::quat_exp(0.5 * (w0 + w1) * dt + dt * dt / 12.0 * w0.cross(w1));
+                const Vec3 fn = q * f_of(i);
+                const Vec3 v1 = v + (0.5 * (fn_prev + fn) - Vec3(0, 0, g)) * dt;
+                p += 0.5 * (v + v1) * dt;
+                v = v1;
+                fn_prev = fn;
+            } else {
+                q = q * foot::quat_exp(w_of(i) * dt);  // foot-imu-zupt-zaru-ekf eq. (8)-(11)
+                v += (q * f_of(i) - Vec3(0, 0, g)) * dt;
+                p += v * dt;
+            }
+        }
+        if (i >= out.truth.size()) break;
+        const double dz_true = out.truth[i].pos_enu_m[2] - t0.pos_enu_m[2];
+        sum += std::abs(p.z() - dz_true);
+        ++steps;
+    }
+    return steps ? sum / steps : 1e9;
+}
+}  // namespace
+
+TEST_CASE("noise-free input: mid-interval integration has no height drift per step at 400 Hz") {
+    sim::SimOptions so;
+    so.rate_hz = 400;
+    so.sensor_errors = false;
+    so.with_gnss = so.with_baro = so.with_mag = false;
+    so.mounting_rpy_deg[1] = -30;
+    const sim::SimOutput out = sim::simulate(sim::builtin_route("corridor_loop"), so);
+    const double first = step_height_drift(out, false);
+    const double mid = step_height_drift(out, true);
+    MESSAGE("height drift per step, 400 Hz, noise-free: first order " << first * 100 << " cm, mid-interval "
+                                                                       << mid * 100 << " cm");
+    CHECK(first > 0.005);
+    CHECK(mid < 0.0005);
+    // The whole pipeline, HUPT off, on the same exact data: no height drift.
+    SimCase c;
+    c.rate_hz = 400;
+    c.sensor_errors = false;
+    c.mounting_rpy_deg[1] = -30;
+    const SimScore s = score_sim(c, with_ekf({{"hupt", false}}));
+    CHECK(s.final_err_z_m < 0.01);
+    CHECK(s.closure_pct < 0.01);
+}
+
+TEST_CASE("foot plugins reject unknown or bad params, naming the key") {
+    const std::string path = data_dir() + "/xio-gait-ngimu/short_walk.csv";
+    auto expect_error = [&](const nlohmann::json& patch, const std::string& key) {
+        try {
+            run_file(path, foot_config(patch, 0.0));
+            FAIL("accepted a bad config");
+        } catch (const std::exception& e) {
+            CHECK(std::string(e.what()).find(key) != std::string::npos);
+        }
+    };
+    expect_error(ekf_patch({{"zupt_sd", 0.01}}), "/pipelines/foot/position_filter/params/zupt_sd");
+    expect_error(ekf_patch({{"zupt_sd_mps", -1.0}}), "zupt_sd_mps");
+    nlohmann::json p;
+    p["pipelines"]["foot"]["step_detector"]["params"]["window_samples"] = 31;
+    expect_error(p, "window_samples");
+    nlohmann::json a;
+    a["pipelines"]["foot"]["attitude_estimator"]["params"]["use_magnetometer"] = "yes";
+    expect_error(a, "use_magnetometer");
+}
+
+TEST_CASE("foot pipeline records: one position per sample, deterministic, valid covariances and quaternions") {
+    const std::string path = data_dir() + "/koroglu-foot-gcp/SensorConnectData_35.csv";
+    const io::SensorLog log = io::read_sensor_file(path);
+    auto doc = nlohmann::json::parse(preset());
+    doc["imu_rate_hz"] = 200.0;
+    ReplayOptions o;
+    o.config_json = doc.dump();
+    o.plugin_dirs = {PEDNAV_PLUGIN_OUTPUT_DIR};
+    o.keep_attitudes = true;
+    o.keep_gait_phases = true;
+    const auto recs = io::merged_records(log);
+    const ReplayResult a = replay(o, recs);
+    const ReplayResult b = replay(o, recs);
+    REQUIRE(a.error.empty());
+    CHECK(a.warnings.empty());
+    CHECK(a.gait_phases.size() == log.imu.size());
+    CHECK(a.positions.size() == a.attitudes.size());
+    CHECK(a.positions.size() + 250 > log.imu.size());  // everything after the alignment
+    REQUIRE(a.positions.size() == b.positions.size());
+    CHECK(std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(pn_position_t)) == 0);
+    REQUIRE(a.strides.size() == b.strides.size());
+    CHECK(std::memcmp(a.strides.data(), b.strides.data(), a.strides.size() * sizeof(pn_stride_t)) == 0);
+    for (const auto& q : a.attitudes) {
+        const double n = std::sqrt(q.q_enu_from_body[0] * q.q_enu_from_body[0] + q.q_enu_from_body[1] * q.q_enu_from_body[1] +
+                                   q.q_enu_from_body[2] * q.q_enu_from_body[2] + q.q_enu_from_body[3] * q.q_enu_from_body[3]);
+        REQUIRE(std::abs(n - 1.0) < 1e-12);
+    }
+    for (size_t i = 0; i < a.positions.size(); i += 97) {
+        Eigen::Matrix3d c;
+        for (int r = 0; r < 3; ++r)
+            for (int k = 0; k < 3; ++k) c(r, k) = a.positions[i].cov_enu_m2[3 * r + k];
+        REQUIRE((c - c.transpose()).norm() == 0.0);
+        REQUIRE(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(c).eigenvalues().minCoeff() > -1e-12);
+    }
+    // Strides chain: their displacements add up to the track between stances.
+    double sum[2] = {0, 0};
+    for (const auto& s : a.strides) {
+        sum[0] += s.displacement_enu_m[0];
+        sum[1] += s.displacement_enu_m[1];
+        CHECK(s.length_m == doctest::Approx(std::hypot(s.displacement_enu_m[0], s.displacement_enu_m[1])));
+    }
+    const auto& p0 = position_at(a, a.strides.front().t_start_ns * 1e-9);
+    const auto& p1 = position_at(a, a.strides.back().header.t_ns * 1e-9);
+    CHECK(std::hypot(p1.pos_enu_m[0] - p0.pos_enu_m[0] - sum[0], p1.pos_enu_m[1] - p0.pos_enu_m[1] - sum[1]) < 1e-6);
+}
+
+TEST_CASE("a start heading given to the engine turns the track (yaw correction at the first sample)") {
+    const std::string path = data_dir() + "/xio-gait-ngimu/short_walk.csv";
+    const io::SensorLog log = io::read_sensor_file(path);
+    auto doc = nlohmann::json::parse(preset());
+    doc["imu_rate_hz"] = 400.0;
+    ReplayOptions o;
+    o.config_json = doc.dump();
+    o.plugin_dirs = {PEDNAV_PLUGIN_OUTPUT_DIR};
+    const auto recs = io::merged_records(log);
+    const ReplayResult base = replay(o, recs);
+    o.heading_deg = 90.0;
+    o.start_enu_m[0] = 5.0;
+    const ReplayResult turned = replay(o, recs);
+    REQUIRE(base.strides.size() == turned.strides.size());
+    REQUIRE(!turned.positions.empty());
+    CHECK(turned.positions.front().heading_rad == doctest::Approx(M_PI / 2).epsilon(1e-9));
+    CHECK(turned.positions.front().pos_enu_m[0] == doctest::Approx(5.0));
+    // Every stride is the base one turned by the heading difference.
+    const double d = turned.positions.front().heading_rad - base.positions.front().heading_rad;
+    for (size_t i = 0; i < base.strides.size(); ++i) {
+        const double* b = base.strides[i].displacement_enu_m;
+        const double* t = turned.strides[i].displacement_enu_m;
+        // Heading is clockwise: a heading change d rotates ENU vectors by -d.
+        const double ex = std::cos(-d) * b[0] - std::sin(-d) * b[1], ey = std::sin(-d) * b[0] + std::cos(-d) * b[1];
+        CHECK(std::hypot(t[0] - ex, t[1] - ey) < 1e-6 + 1e-6 * i);
+    }
+}
