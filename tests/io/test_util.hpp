@@ -3,8 +3,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
+#include <vector>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -19,12 +21,20 @@ inline bool exists(const std::string& path) {
     return stat(path.c_str(), &st) == 0;
 }
 
+// Folders made by temp_dir(); test_main.cpp removes them when the run ends.
+inline std::vector<std::string>& temp_dirs() {
+    static std::vector<std::string> dirs;
+    return dirs;
+}
+
 // A fresh folder under TMPDIR for files a test writes.
 inline std::string temp_dir() {
     const char* base = std::getenv("TMPDIR");
     std::string templ = std::string(base ? base : "/tmp") + "/pednav_io_test_XXXXXX";
     char* made = mkdtemp(templ.data());
-    return made ? std::string(made) : std::string();
+    if (made == nullptr) return std::string();
+    temp_dirs().push_back(made);
+    return made;
 }
 
 inline std::string write_file(const std::string& dir, const std::string& name, const std::string& content) {
