@@ -67,6 +67,8 @@ TEST_CASE("ipol step annotations: footsteps within the trial and the two 10 m le
     CHECK(t.legs[1].length_m == 10.0);
     // 5-2 annotates 21 + 19 footsteps, six of them after the end of the trial.
     CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/5-2.json").step_count == 34);
+    CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/1-1.json", 100.0, 10.0, "left").step_count == 17);
+    CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/1-1.json", 100.0, 10.0, "right").step_count == 18);
 }
 
 TEST_CASE("IPIN POSI lines: metres from the first point, floors") {

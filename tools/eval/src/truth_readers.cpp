@@ -265,7 +265,9 @@ Truth make_loop_truth(double length_m) {
     return t;
 }
 
-Truth read_ipol_steps(const std::string& path, double rate_hz, double leg_length_m) {
+Truth read_ipol_steps(const std::string& path, double rate_hz, double leg_length_m, const std::string& feet) {
+    if (feet != "both" && feet != "left" && feet != "right")
+        throw std::runtime_error("ipol steps: feet must be both, left or right");
     const nlohmann::json j = read_json(path);
     Truth t;
     t.kind = TruthKind::step_events;
@@ -273,11 +275,13 @@ Truth read_ipol_steps(const std::string& path, double rate_hz, double leg_length
     try {
         const double tb0 = j.at("TrialBoundaries").at(0).get<double>(), tb1 = j.at("TrialBoundaries").at(1).get<double>();
         const double ut0 = j.at("UTurnBoundaries").at(0).get<double>(), ut1 = j.at("UTurnBoundaries").at(1).get<double>();
-        for (const char* key : {"LeftFootEvents", "RightFootEvents"})
+        for (const char* key : {"LeftFootEvents", "RightFootEvents"}) {
+            if ((feet == "left" && key[0] != 'L') || (feet == "right" && key[0] != 'R')) continue;
             for (const auto& ev : j.at(key)) {
                 const double end = ev.at(1).get<double>();
                 if (ev.at(0).get<double>() >= tb0 && end <= tb1) t.step_times_s.push_back(end / rate_hz);
             }
+        }
         std::sort(t.step_times_s.begin(), t.step_times_s.end());
         t.step_count = static_cast<int>(t.step_times_s.size());
         t.legs.push_back({tb0 / rate_hz, ut0 / rate_hz, leg_length_m});

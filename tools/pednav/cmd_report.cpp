@@ -1,0 +1,328 @@
+#include "cmd_report.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+#include <pednav_engine/replay.hpp>
+#include <pednav_eval/metrics.hpp>
+#include <pednav_eval/truth_readers.hpp>
+#include <pednav_io/sensor_log.hpp>
+#include <pednav_plot/eval_plot.hpp>
+#include <pednav_sim/simulate.hpp>
+
+#include "cli_common.hpp"
+
+namespace {
+
+using namespace pednav;
+
+const char* kUsage =
+    "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,waist] [--only TEXT] [--seed N]\n"
+    "                     [--no-recordings] [--no-sim] [--plugin-dir DIR]\n"
+    "  --data    the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the build)\n"
+    "  --only    run only the walks whose name contains TEXT\n"
+    "Writes DIR/accuracy.md, DIR/accuracy.json and DIR/plots/<mount>-<walk>.svg.\n";
+
+bool exists(const std::string& p) {
+    struct stat st {};
+    return ::stat(p.c_str(), &st) == 0;
+}
+
+void make_dir(const std::string& p) {
+    if (::mkdir(p.c_str(), 0777) != 0 && errno != EEXIST) throw std::runtime_error("cannot create " + p + ": " + std::strerror(errno));
+}
+
+// One walk to run: a shared recording with its truth, or a simulated route.
+struct Walk {
+    std::string name, mount;
+    std::string input;                 // recording path (empty: simulated)
+    std::string route;                 // built-in route name (simulated)
+    eval::Truth truth;
+    eval::Alignment alignment = eval::Alignment::start_point;
+    bool give_start = false;           // start the engine at the truth's start point and heading
+};
+
+struct Result {
+    Walk walk;
+    eval::Metrics metrics;
+    double duration_s = NAN;
+    std::string error, plot;
+};
+
+std::vector<Walk> recording_walks(const std::string& data) {
+    std::vector<Walk> w;
+    const std::string kor = data + "/koroglu-foot-gcp/SensorConnectData_";
+    for (int n : {33, 35, 39, 42, 44}) {
+        if (!exists(kor + std::to_string(n) + ".csv")) continue;
+        Walk k{"koroglu-" + std::to_string(n), "foot", kor + std::to_string(n) + ".csv", "", {}, eval::Alignment::fitted, false};
+        k.truth = eval::read_koroglu_gcp(kor + std::to_string(n) + "_gcp.csv");
+        w.push_back(k);
+    }
+    for (const char* name : {"short_walk", "long_walk"}) {
+        const std::string path = data + "/xio-gait-ngimu/" + name + ".csv";
+        if (!exists(path)) continue;
+        Walk x{std::string("xio-") + name, "foot", path, "", eval::make_loop_truth(), eval::Alignment::none, false};
+        w.push_back(x);
+    }
+    for (const char* trial : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
+        const std::string base = data + "/ipol-gait-waist-feet/" + trial;
+        if (!exists(base + ".json")) continue;
+        for (const char* part : {"lf", "rf", "lb"}) {
+            Walk i{std::string("ipol-") + trial + "-" + part, part[1] == 'b' ? "waist" : "foot", base + "_" + part + ".txt", "", {},
+                   eval::Alignment::none, false};
+            i.truth = eval::read_ipol_steps(base + ".json", 100.0, 10.0, part[1] == 'b' ? "both" : (part[0] == 'l' ? "left" : "right"));
+            w.push_back(i);
+        }
+    }
+    for (const char* walk : {"user1_straight", "user1_8_shape", "user1_square_2x", "user3_forward"}) {
+        const std::string dir = data + "/humolire-phone/" + walk;
+        if (!exists(dir + "/keypoints.json")) continue;
+        Walk h{std::string("humolire-") + walk, "chest", dir, "", eval::read_humolire(dir), eval::Alignment::none, true};
+        w.push_back(h);
+    }
+    return w;
+}
+
+eval::Truth truth_of(const sim::SimOutput& out, const sim::Route& route) {
+    eval::Truth t;
+    t.kind = eval::TruthKind::simulated;
+    t.name = route.name;
+    const double period_s = 0.1;
+    double next = -1.0;
+    for (const sim::TruthSample& s : out.truth) {
+        if (s.t_s + 1e-9 < next) continue;
+        next = s.t_s + period_s;
+        eval::TruthPoint p;
+        p.t_s = s.t_s;
+        p.x_m = s.pos_enu_m[0];
+        p.y_m = s.pos_enu_m[1];
+        p.z_m = s.pos_enu_m[2];
+        p.floor = s.floor;
+        p.has_floor = true;
+        p.heading_deg = s.heading_deg;
+        t.points.push_back(p);
+    }
+    t.step_count = static_cast<int>(out.step_times_s.size());
+    t.step_times_s = out.step_times_s;
+    t.distance_m = out.distance_m;
+    const sim::TruthSample &a = out.truth.front(), &b = out.truth.back();
+    t.closed_loop = std::hypot(a.pos_enu_m[0] - b.pos_enu_m[0], a.pos_enu_m[1] - b.pos_enu_m[1]) < 0.05;
+    t.loop_length_m = out.distance_m;
+    for (const sim::Wall& w : route.walls) t.walls.push_back({w.floor, w.points_enu_m});
+    return t;
+}
+
+Result run_walk(const Walk& walk, const std::string& config, const std::vector<std::string>& plugin_dirs, uint64_t seed) {
+    Result r;
+    r.walk = walk;
+    ReplayOptions o;
+    o.config_json = config;
+    o.plugin_dirs = plugin_dirs;
+    o.mount = walk.mount;
+    std::vector<const pn_record_header_t*> records;
+    io::SensorLog log;
+    sim::SimOutput simulated;
+    if (walk.input.empty()) {
+        const sim::Route route = sim::builtin_route(walk.route);
+        sim::SimOptions so;
+        so.mount = walk.mount;
+        so.seed = seed;
+        simulated = sim::simulate(route, so);
+        records = simulated.records();
+        r.walk.truth = truth_of(simulated, route);
+        // The walker is told where it starts and which way it faces, as in an app.
+        o.heading_deg = simulated.truth.front().heading_deg;
+    } else {
+        log = io::read_sensor_file(walk.input);
+        records = io::merged_records(log);
+    }
+    if (walk.give_start) {
+        o.start_enu_m[0] = walk.truth.start_x_m;
+        o.start_enu_m[1] = walk.truth.start_y_m;
+        o.heading_deg = walk.truth.start_heading_deg;
+    }
+    if (!records.empty()) r.duration_s = static_cast<double>(records.back()->t_ns - records.front()->t_ns) * 1e-9;
+    const ReplayResult rr = replay(o, records);
+    if (!rr.error.empty()) r.error = rr.error;
+    if (rr.positions.empty()) {
+        if (r.error.empty()) r.error = "no positions";
+        return r;
+    }
+    eval::Track track = eval::track_from_positions(rr.positions);
+    track.step_times_s = walk.mount == "foot" && !rr.strides.empty() ? eval::step_times_from_strides(rr.strides)
+                                                                     : eval::step_times_from_steps(rr.steps);
+    track.has_steps = true;
+    eval::EvalOptions eo;
+    eo.alignment = walk.alignment;
+    eo.fit_points = 5;
+    r.metrics = eval::evaluate(track, r.walk.truth, eo);
+    r.plot = plot::render_walk(plot::walk_plot(walk.mount + " / " + walk.name, track, &r.walk.truth, &r.metrics));
+    return r;
+}
+
+std::string f(double v, int decimals = 2) {
+    if (!std::isfinite(v)) return "-";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+std::string markdown(const std::vector<Result>& results, uint64_t seed) {
+    std::string md = "# Accuracy\n\nGenerated by `pednav report`. Every walk runs through the mount's preset "
+                     "(`configs/<mount>.json`) with the real plugins. Horizontal errors in metres at the truth's "
+                     "checkpoints (simulated walks: every 0.1 s; koroglu: every footprint, after one rotation fitted on "
+                     "the first 5 strides; humolire: every landmark, started at the known start point and heading). "
+                     "Simulated walks: `pednav sim` built-in routes, seed " + std::to_string(seed) +
+                     ", consumer-grade sensor errors, start heading given. Definitions: docs/metrics.md.\n\n";
+    md += "| mount | walk | truth | time (s) | distance (m) | checkpoints | mean | median | p75 | max | final | loop closure (%) | "
+          "height error (m) | steps (est / truth) | legs (%) |\n";
+    md += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+    for (const Result& r : results) {
+        const eval::Metrics& m = r.metrics;
+        if (!r.error.empty() && m.checkpoints == 0 && !std::isfinite(m.loop_closure_pct) && m.leg_lengths_m.empty()) {
+            md += "| " + r.walk.mount + " | " + r.walk.name + " | " + eval::truth_kind_name(r.walk.truth.kind) +
+                  " | " + f(r.duration_s, 0) + " | failed: " + r.error + " |||||||||||\n";
+            continue;
+        }
+        std::string legs;
+        for (double e : m.leg_errors_pct) legs += (legs.empty() ? "" : ", ") + f(e, 1);
+        md += "| " + r.walk.mount + " | " + r.walk.name + " | " + eval::truth_kind_name(r.walk.truth.kind) + " | " +
+              f(r.duration_s, 0) + " | " + f(m.distance_m, 1) + " | " + std::to_string(m.checkpoints) + " | " +
+              f(m.horizontal_m.mean) + " | " + f(m.horizontal_m.median) + " | " + f(m.horizontal_m.p75) + " | " +
+              f(m.horizontal_m.max) + " | " + f(m.final_error_m) + " | " + f(m.loop_closure_pct, 3) + " | " +
+              f(m.height_error_mean_m) + " | " + (m.step_count >= 0 ? std::to_string(m.step_count) : "-") + " / " +
+              (m.truth_step_count >= 0 ? std::to_string(m.truth_step_count) : "-") + " | " + (legs.empty() ? "-" : legs) +
+              " |\n";
+    }
+    // Percentiles across walks, per mount.
+    std::map<std::string, std::map<std::string, std::vector<double>>> by_mount;
+    for (const Result& r : results) {
+        auto& v = by_mount[r.walk.mount];
+        const eval::Metrics& m = r.metrics;
+        if (std::isfinite(m.horizontal_m.mean)) v["mean horizontal error (m)"].push_back(m.horizontal_m.mean);
+        if (std::isfinite(m.horizontal_m.p75)) v["p75 horizontal error (m)"].push_back(m.horizontal_m.p75);
+        if (std::isfinite(m.final_error_m)) v["final error (m)"].push_back(m.final_error_m);
+        if (std::isfinite(m.loop_closure_pct)) v["loop closure (% of distance)"].push_back(m.loop_closure_pct);
+        for (double e : m.leg_errors_pct) v["leg length error (abs %)"].push_back(std::fabs(e));
+        if (m.step_count >= 0 && m.truth_step_count > 0)
+            v["step count error (abs %)"].push_back(100.0 * std::abs(m.step_count - m.truth_step_count) / m.truth_step_count);
+    }
+    md += "\n## Across walks\n\n| mount | metric | walks | median | p75 | p95 | max |\n|---|---|---:|---:|---:|---:|---:|\n";
+    for (const auto& [mount, metrics] : by_mount)
+        for (const auto& [name, v] : metrics)
+            md += "| " + mount + " | " + name + " | " + std::to_string(v.size()) + " | " + f(eval::percentile(v, 50), 3) +
+                  " | " + f(eval::percentile(v, 75), 3) + " | " + f(eval::percentile(v, 95), 3) + " | " +
+                  f(eval::percentile(v, 100), 3) + " |\n";
+    return md;
+}
+
+std::string default_data_dir() {
+    if (const char* env = std::getenv("PEDNAV_SHARED_DATA_DIR")) return env;
+    if (exists("../shared/data")) return "../shared/data";
+    return cli::executable_dir() + "/../../shared/data";
+}
+
+}  // namespace
+
+int pednav_cmd_report(const std::vector<std::string>& args) {
+    std::string out, data, only;
+    std::vector<std::string> mounts{"foot", "chest", "waist"}, plugin_dirs{cli::default_plugin_dir()};
+    uint64_t seed = 1;
+    bool recordings = true, simulated = true;
+    try {
+        for (size_t i = 0; i < args.size(); ++i) {
+            const std::string& a = args[i];
+            auto value = [&]() -> std::string {
+                if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
+                return args[++i];
+            };
+            if (a == "--out") out = value();
+            else if (a == "--data") data = value();
+            else if (a == "--only") only = value();
+            else if (a == "--seed") seed = std::strtoull(value().c_str(), nullptr, 10);
+            else if (a == "--plugin-dir") plugin_dirs.push_back(value());
+            else if (a == "--no-recordings") recordings = false;
+            else if (a == "--no-sim") simulated = false;
+            else if (a == "--mounts") {
+                mounts.clear();
+                std::string list = value() + ",";
+                for (size_t p = 0, q; (q = list.find(',', p)) != std::string::npos; p = q + 1)
+                    if (q > p) mounts.push_back(list.substr(p, q - p));
+            } else if (a == "--help" || a == "-h") {
+                std::fputs(kUsage, stdout);
+                return 0;
+            } else throw std::invalid_argument("unknown option " + a);
+        }
+        if (out.empty()) throw std::invalid_argument("--out is required");
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "pednav report: %s\n%s", e.what(), kUsage);
+        return 2;
+    }
+    try {
+        if (data.empty()) data = default_data_dir();
+        make_dir(out);
+        make_dir(out + "/plots");
+        std::map<std::string, std::string> configs;
+        for (const std::string& m : mounts) {
+            const std::string preset = cli::default_config_dir() + "/" + m + ".json";
+            if (exists(preset)) configs[m] = cli::read_text_file(preset);
+            else std::fprintf(stderr, "pednav report: no preset for mount %s (%s): skipped\n", m.c_str(), preset.c_str());
+        }
+        std::vector<Walk> walks;
+        if (recordings) {
+            if (!exists(data)) std::fprintf(stderr, "pednav report: no shared recordings at %s: skipped\n", data.c_str());
+            else walks = recording_walks(data);
+        }
+        if (simulated)
+            for (const std::string& m : mounts)
+                for (const std::string& route : sim::builtin_route_names())
+                    walks.push_back({"sim-" + route, m, "", route, {}, eval::Alignment::start_point, false});
+        std::vector<Result> results;
+        nlohmann::json js = nlohmann::json::array();
+        for (const Walk& w : walks) {
+            if (!configs.count(w.mount) || (!only.empty() && w.name.find(only) == std::string::npos)) continue;
+            std::fprintf(stderr, "%-6s %-28s ", w.mount.c_str(), w.name.c_str());
+            Result r;
+            try {
+                r = run_walk(w, configs[w.mount], plugin_dirs, seed);
+            } catch (const std::exception& e) {
+                r.walk = w;
+                r.error = e.what();
+            }
+            if (!r.plot.empty()) {
+                const std::string file = "plots/" + w.mount + "-" + w.name + ".svg";
+                std::ofstream(out + "/" + file) << r.plot;
+                r.plot = file;
+            }
+            std::fprintf(stderr, "%s\n", r.error.empty() ? ("mean error " + f(r.metrics.horizontal_m.mean) + " m, loop " +
+                                                            f(r.metrics.loop_closure_pct, 3) + " %").c_str()
+                                                         : ("error: " + r.error).c_str());
+            nlohmann::json j = eval::to_json(r.metrics);
+            j["walk"] = w.name;
+            j["mount"] = w.mount;
+            j["duration_s"] = std::isfinite(r.duration_s) ? nlohmann::json(r.duration_s) : nlohmann::json(nullptr);
+            j["plot"] = r.plot;
+            j["error"] = r.error;
+            js.push_back(j);
+            results.push_back(std::move(r));
+        }
+        std::ofstream(out + "/accuracy.md") << markdown(results, seed);
+        std::ofstream(out + "/accuracy.json") << js.dump(2) << '\n';
+        std::printf("%zu walks -> %s/accuracy.md\n", results.size(), out.c_str());
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "pednav report: %s\n", e.what());
+        return 1;
+    }
+}

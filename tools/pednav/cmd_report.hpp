@@ -1,0 +1,11 @@
+// pednav report: run every shared recording that has a ground truth and every
+// built-in simulated walk through the mount presets, score each, and write a
+// markdown accuracy table (per walk, and percentiles across walks per mount),
+// the same as JSON, and one SVG per walk.
+#pragma once
+
+#include <string>
+#include <vector>
+
+// args exclude the word "report". Returns the process exit status.
+int pednav_cmd_report(const std::vector<std::string>& args);
