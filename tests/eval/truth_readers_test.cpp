@@ -65,6 +65,8 @@ TEST_CASE("ipol step annotations: footsteps within the trial and the two 10 m le
     CHECK(t.legs[0].t1_s == doctest::Approx(13.16));
     CHECK(t.legs[1].t0_s == doctest::Approx(14.74));
     CHECK(t.legs[1].length_m == 10.0);
+    // 10-1 has "Height": NaN (Python's JSON), read all the same.
+    CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/10-1.json").step_count == 33);
     // 5-2 annotates 21 + 19 footsteps, six of them after the end of the trial.
     CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/5-2.json").step_count == 34);
     CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/1-1.json", 100.0, 10.0, "left").step_count == 17);

@@ -60,36 +60,46 @@ struct Result {
     std::string error, plot;
 };
 
-std::vector<Walk> recording_walks(const std::string& data) {
+// A walk whose truth cannot be read is reported through `skip` and left out.
+template <typename Skip>
+std::vector<Walk> recording_walks(const std::string& data, Skip skip) {
     std::vector<Walk> w;
+    auto add = [&](Walk walk, const std::string& truth_file, auto read) {
+        try {
+            if (!truth_file.empty()) walk.truth = read();
+            w.push_back(std::move(walk));
+        } catch (const std::exception& e) {
+            skip(walk.name, e);
+        }
+    };
     const std::string kor = data + "/koroglu-foot-gcp/SensorConnectData_";
     for (int n : {33, 35, 39, 42, 44}) {
-        if (!exists(kor + std::to_string(n) + ".csv")) continue;
-        Walk k{"koroglu-" + std::to_string(n), "foot", kor + std::to_string(n) + ".csv", "", {}, eval::Alignment::fitted, false};
-        k.truth = eval::read_koroglu_gcp(kor + std::to_string(n) + "_gcp.csv");
-        w.push_back(k);
+        const std::string base = kor + std::to_string(n);
+        if (!exists(base + ".csv")) continue;
+        add({"koroglu-" + std::to_string(n), "foot", base + ".csv", "", {}, eval::Alignment::fitted, false}, base + "_gcp.csv",
+            [&] { return eval::read_koroglu_gcp(base + "_gcp.csv"); });
     }
     for (const char* name : {"short_walk", "long_walk"}) {
         const std::string path = data + "/xio-gait-ngimu/" + name + ".csv";
         if (!exists(path)) continue;
-        Walk x{std::string("xio-") + name, "foot", path, "", eval::make_loop_truth(), eval::Alignment::none, false};
-        w.push_back(x);
+        add({std::string("xio-") + name, "foot", path, "", eval::make_loop_truth(), eval::Alignment::none, false}, "",
+            [] { return eval::Truth{}; });
     }
     for (const char* trial : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
         const std::string base = data + "/ipol-gait-waist-feet/" + trial;
         if (!exists(base + ".json")) continue;
-        for (const char* part : {"lf", "rf", "lb"}) {
-            Walk i{std::string("ipol-") + trial + "-" + part, part[1] == 'b' ? "waist" : "foot", base + "_" + part + ".txt", "", {},
-                   eval::Alignment::none, false};
-            i.truth = eval::read_ipol_steps(base + ".json", 100.0, 10.0, part[1] == 'b' ? "both" : (part[0] == 'l' ? "left" : "right"));
-            w.push_back(i);
+        for (const std::string part : {"lf", "rf", "lb"}) {
+            const std::string feet = part == "lb" ? "both" : (part == "lf" ? "left" : "right");
+            add({std::string("ipol-") + trial + "-" + part, part == "lb" ? "waist" : "foot", base + "_" + part + ".txt", "", {},
+                 eval::Alignment::none, false},
+                base + ".json", [&] { return eval::read_ipol_steps(base + ".json", 100.0, 10.0, feet); });
         }
     }
     for (const char* walk : {"user1_straight", "user1_8_shape", "user1_square_2x", "user3_forward"}) {
         const std::string dir = data + "/humolire-phone/" + walk;
         if (!exists(dir + "/keypoints.json")) continue;
-        Walk h{std::string("humolire-") + walk, "chest", dir, "", eval::read_humolire(dir), eval::Alignment::none, true};
-        w.push_back(h);
+        add({std::string("humolire-") + walk, "chest", dir, "", {}, eval::Alignment::none, true}, dir,
+            [&] { return eval::read_humolire(dir); });
     }
     return w;
 }
@@ -227,6 +237,16 @@ std::string markdown(const std::vector<Result>& results, uint64_t seed) {
     return md;
 }
 
+// One line per walk on stderr while the report runs.
+std::string summary(const eval::Metrics& m) {
+    std::string s;
+    if (m.checkpoints > 0) s += "mean error " + f(m.horizontal_m.mean) + " m, p75 " + f(m.horizontal_m.p75) + " m; ";
+    if (std::isfinite(m.loop_closure_pct)) s += "loop closure " + f(m.loop_closure_pct, 3) + " %; ";
+    for (size_t i = 0; i < m.leg_errors_pct.size(); ++i) s += "leg " + std::to_string(i + 1) + " " + f(m.leg_errors_pct[i], 1) + " %; ";
+    if (m.step_count >= 0) s += "steps " + std::to_string(m.step_count) + " / " + (m.truth_step_count >= 0 ? std::to_string(m.truth_step_count) : "-");
+    return s;
+}
+
 std::string default_data_dir() {
     if (const char* env = std::getenv("PEDNAV_SHARED_DATA_DIR")) return env;
     if (exists("../shared/data")) return "../shared/data";
@@ -282,7 +302,9 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
         std::vector<Walk> walks;
         if (recordings) {
             if (!exists(data)) std::fprintf(stderr, "pednav report: no shared recordings at %s: skipped\n", data.c_str());
-            else walks = recording_walks(data);
+            else walks = recording_walks(data, [](const std::string& what, const std::exception& e) {
+                std::fprintf(stderr, "pednav report: %s: %s (skipped)\n", what.c_str(), e.what());
+            });
         }
         if (simulated)
             for (const std::string& m : mounts)
@@ -305,9 +327,7 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
                 std::ofstream(out + "/" + file) << r.plot;
                 r.plot = file;
             }
-            std::fprintf(stderr, "%s\n", r.error.empty() ? ("mean error " + f(r.metrics.horizontal_m.mean) + " m, loop " +
-                                                            f(r.metrics.loop_closure_pct, 3) + " %").c_str()
-                                                         : ("error: " + r.error).c_str());
+            std::fprintf(stderr, "%s\n", r.error.empty() ? summary(r.metrics).c_str() : ("error: " + r.error).c_str());
             nlohmann::json j = eval::to_json(r.metrics);
             j["walk"] = w.name;
             j["mount"] = w.mount;

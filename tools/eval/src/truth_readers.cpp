@@ -44,10 +44,33 @@ bool ends_with(const std::string& s, const std::string& suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+// JSON as written by Python's json module: bare NaN / Infinity (ipol's Height
+// of subject 10) become null before parsing.
 nlohmann::json read_json(const std::string& path) {
     std::ifstream in = open(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string raw = ss.str();
+    std::string text;
+    bool in_string = false;
+    for (size_t i = 0; i < raw.size(); ++i) {
+        const char c = raw[i];
+        if (c == '"' && (i == 0 || raw[i - 1] != '\\')) in_string = !in_string;
+        if (!in_string && raw.compare(i, 3, "NaN") == 0) {
+            text += "null";
+            i += 2;
+        } else if (!in_string && raw.compare(i, 9, "-Infinity") == 0) {
+            text += "null";
+            i += 8;
+        } else if (!in_string && raw.compare(i, 8, "Infinity") == 0) {
+            text += "null";
+            i += 7;
+        } else {
+            text += c;
+        }
+    }
     try {
-        return nlohmann::json::parse(in);
+        return nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(path + ": " + e.what());
     }
