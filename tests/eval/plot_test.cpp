@@ -28,7 +28,8 @@ bool well_formed(const std::string& s, std::string& why) {
         for (char c : tag) quotes += c == '"';
         if (quotes % 2) return why = "odd quotes in <" + tag + ">", false;
         if (tag.back() == '/') continue;
-        const std::string name = tag.substr(tag[0] == '/' ? 1 : 0, tag.find_first_of(" \t\n") - (tag[0] == '/' ? 1 : 0));
+        const std::string name =
+            tag.substr(tag[0] == '/' ? 1 : 0, tag.find_first_of(" \t\n") - (tag[0] == '/' ? 1 : 0));
         if (tag[0] == '/') {
             if (stack.empty() || stack.back() != name) return why = "unexpected </" + name + ">", false;
             stack.pop_back();
@@ -87,7 +88,8 @@ TEST_CASE("map panel: equal scale on both axes") {
 }
 
 TEST_CASE("walk figure from an evaluation: truth, walls, estimate and error panel") {
-    const pednav::eval::Truth truth = pednav::eval::read_truth(std::string(PEDNAV_SHARED_DATA_DIR) + "/humolire-phone/user1_8_shape");
+    const pednav::eval::Truth truth =
+        pednav::eval::read_truth(std::string(PEDNAV_SHARED_DATA_DIR) + "/humolire-phone/user1_8_shape");
     pednav::eval::Track track;
     for (const auto& p : truth.points) {
         pednav::eval::TrackSample s;

@@ -53,8 +53,10 @@ TEST_CASE("loop closure in percent of distance") {
 TEST_CASE("Procrustes rotation recovers a known rotation, in least squares") {
     const double th = 30.0 * M_PI / 180.0;
     std::vector<std::array<double, 2>> a{{1, 0}, {2, 1}, {0, 3}}, b;
-    for (const auto& p : a) b.push_back({std::cos(th) * p[0] - std::sin(th) * p[1], std::sin(th) * p[0] + std::cos(th) * p[1]});
+    for (const auto& p : a)
+        b.push_back({std::cos(th) * p[0] - std::sin(th) * p[1], std::sin(th) * p[0] + std::cos(th) * p[1]});
     CHECK(procrustes_rotation_rad(a, b) * 180 / M_PI == doctest::Approx(30.0));
     // Two points at 0 and 90 deg, mapped to 10 and 90 deg: the best rotation splits the difference.
-    CHECK(procrustes_rotation_rad({{1, 0}, {0, 1}}, {{std::cos(0.2), std::sin(0.2)}, {0, 1}}) == doctest::Approx(0.1));
+    CHECK(procrustes_rotation_rad({{1, 0}, {0, 1}}, {{std::cos(0.2), std::sin(0.2)}, {0, 1}}) ==
+          doctest::Approx(0.1));
 }

@@ -22,7 +22,8 @@ TEST_CASE("koroglu footprints: stride counts and path lengths of SOURCE.md") {
     } walks[] = {{33, 47, 64.2}, {35, 28, 55.5}, {39, 80, 98.3}, {42, 102, 130.9}, {44, 65, 106.2}};
     for (const Walk& w : walks) {
         CAPTURE(w.n);
-        const Truth t = read_truth(kData + "/koroglu-foot-gcp/SensorConnectData_" + std::to_string(w.n) + "_gcp.csv");
+        const Truth t =
+            read_truth(kData + "/koroglu-foot-gcp/SensorConnectData_" + std::to_string(w.n) + "_gcp.csv");
         CHECK(t.kind == TruthKind::footprints);
         CHECK(t.step_count == w.strides);
         CHECK(t.points.size() == static_cast<size_t>(w.strides + 1));
@@ -39,7 +40,10 @@ TEST_CASE("humolire landmarks: counts, reference times, start, map walls") {
         const char* dir;
         size_t marks;
         double polyline_m;
-    } walks[] = {{"user1_straight", 28, 219.0}, {"user1_8_shape", 8, 113.5}, {"user1_square_2x", 8, 120.8}, {"user3_forward", 16, 238.9}};
+    } walks[] = {{"user1_straight", 28, 219.0},
+                 {"user1_8_shape", 8, 113.5},
+                 {"user1_square_2x", 8, 120.8},
+                 {"user3_forward", 16, 238.9}};
     for (const Walk& w : walks) {
         CAPTURE(w.dir);
         const Truth t = read_truth(kData + "/humolire-phone/" + w.dir);

@@ -12,7 +12,8 @@ using namespace pednav::sim;
 
 namespace {
 
-SimOutput run(const std::string& route, const std::string& mount, bool errors, uint64_t seed = 1, double rate = 200.0) {
+SimOutput run(const std::string& route, const std::string& mount, bool errors, uint64_t seed = 1,
+              double rate = 200.0) {
     SimOptions o;
     o.mount = mount;
     o.sensor_errors = errors;
@@ -36,18 +37,20 @@ TEST_CASE("truth: velocity is the derivative of position, and the trajectory is 
                     const double fd = (o.truth[k + 1].pos_enu_m[i] - o.truth[k - 1].pos_enu_m[i]) / dt;
                     const double e = std::fabs(fd - o.truth[k].vel_enu_mps[i]);
                     if (e > worst) worst = e, worst_t = o.truth[k].t_s;
-                    worst_jump = std::max(worst_jump, std::fabs(o.truth[k].pos_enu_m[i] - o.truth[k - 1].pos_enu_m[i]));
+                    worst_jump = std::max(worst_jump,
+                                          std::fabs(o.truth[k].pos_enu_m[i] - o.truth[k - 1].pos_enu_m[i]));
                 }
             }
             CAPTURE(worst_t);
-            CHECK(worst < 2e-3);        // central difference error at 400 Hz, m/s
+            CHECK(worst < 2e-3);       // central difference error at 400 Hz, m/s
             CHECK(worst_jump < 0.03);  // at most 12 m/s for one sample
         }
     }
 }
 
 TEST_CASE("determinism: the same seed gives bit-identical records, another seed different ones") {
-    const SimOutput a = run("stairs", "foot", true, 7), b = run("stairs", "foot", true, 7), c = run("stairs", "foot", true, 8);
+    const SimOutput a = run("stairs", "foot", true, 7), b = run("stairs", "foot", true, 7),
+                    c = run("stairs", "foot", true, 8);
     REQUIRE(a.imu.size() == b.imu.size());
     CHECK(std::memcmp(a.imu.data(), b.imu.data(), a.imu.size() * sizeof(pn_imu_t)) == 0);
     CHECK(std::memcmp(a.mag.data(), b.mag.data(), a.mag.size() * sizeof(pn_mag_t)) == 0);
@@ -82,7 +85,8 @@ TEST_CASE("corridor_loop, foot: 120 m, 86 strides, closes exactly, realistic sta
     // Pitch of the foot (rotation about its left axis, positive toes down): toe-off and heel strike.
     double max_pitch = -1.0, min_pitch = 1.0, max_speed = 0.0;
     for (const TruthSample& t : o.truth) {
-        const Eigen::Quaterniond q(t.q_enu_from_body[0], t.q_enu_from_body[1], t.q_enu_from_body[2], t.q_enu_from_body[3]);
+        const Eigen::Quaterniond q(t.q_enu_from_body[0], t.q_enu_from_body[1], t.q_enu_from_body[2],
+                                   t.q_enu_from_body[3]);
         const Eigen::Vector3d x = q * Eigen::Vector3d::UnitX();
         const double pitch = std::asin(-x.z());
         max_pitch = std::max(max_pitch, pitch);
@@ -99,8 +103,10 @@ TEST_CASE("stairs, foot: up two flights to floor 1 and back, no heel strike on t
     const SimOutput o = run("stairs", "foot", false);
     double max_z = 0.0;
     int max_floor = 0;
-    for (const TruthSample& t : o.truth) max_z = std::max(max_z, t.pos_enu_m[2]), max_floor = std::max(max_floor, t.floor);
-    CHECK(max_z == doctest::Approx(3.4 + 0.08).epsilon(0.02));  // floor 1 plus the swing's clearance... at most
+    for (const TruthSample& t : o.truth)
+        max_z = std::max(max_z, t.pos_enu_m[2]), max_floor = std::max(max_floor, t.floor);
+    CHECK(max_z ==
+          doctest::Approx(3.4 + 0.08).epsilon(0.02));  // floor 1 plus the swing's clearance... at most
     CHECK(max_floor == 1);
     CHECK(o.truth.back().pos_enu_m[2] == doctest::Approx(0.0).scale(1e-9));
     CHECK(o.truth.back().floor == 0);
@@ -108,7 +114,8 @@ TEST_CASE("stairs, foot: up two flights to floor 1 and back, no heel strike on t
     double min_pitch_on_stairs = 0.0;
     for (const TruthSample& t : o.truth) {
         if (t.pos_enu_m[0] < 10.05 || t.pos_enu_m[0] > 12.75) continue;  // the flights span x in [10, 12.8]
-        const Eigen::Quaterniond q(t.q_enu_from_body[0], t.q_enu_from_body[1], t.q_enu_from_body[2], t.q_enu_from_body[3]);
+        const Eigen::Quaterniond q(t.q_enu_from_body[0], t.q_enu_from_body[1], t.q_enu_from_body[2],
+                                   t.q_enu_from_body[3]);
         min_pitch_on_stairs = std::min(min_pitch_on_stairs, std::asin(-(q * Eigen::Vector3d::UnitX()).z()));
     }
     CHECK(min_pitch_on_stairs > -1e-9);
@@ -122,7 +129,8 @@ TEST_CASE("chest and waist: every step counted, bounce of a few cm, standing sti
         CHECK(o.distance_m == doctest::Approx(120.0));
         double zmin = 1e9, zmax = -1e9;
         for (const TruthSample& t : o.truth)
-            if (t.t_s > 30.0 && t.t_s < 40.0) zmin = std::min(zmin, t.pos_enu_m[2]), zmax = std::max(zmax, t.pos_enu_m[2]);
+            if (t.t_s > 30.0 && t.t_s < 40.0)
+                zmin = std::min(zmin, t.pos_enu_m[2]), zmax = std::max(zmax, t.pos_enu_m[2]);
         CHECK(zmax - zmin > 0.03);
         CHECK(zmax - zmin < 0.08);
         CHECK(o.truth.front().stance == 1);
@@ -158,9 +166,10 @@ TEST_CASE("sensor model: exact readings at rest when errors are off, realistic n
 TEST_CASE("barometer and GNSS: floors in pascals, fixes only outdoors") {
     const SimOutput o = run("stairs", "chest", false);
     double pmin = 1e9, pmax = 0;
-    for (const pn_baro_t& b : o.baro) pmin = std::min(pmin, b.pressure_pa), pmax = std::max(pmax, b.pressure_pa);
+    for (const pn_baro_t& b : o.baro)
+        pmin = std::min(pmin, b.pressure_pa), pmax = std::max(pmax, b.pressure_pa);
     CHECK(pmax - pmin == doctest::Approx(3.4 * 1.18 * 9.80665).epsilon(0.08));  // rho g dh, plus the bounce
-    CHECK(o.gnss.empty());  // all indoors
+    CHECK(o.gnss.empty());                                                      // all indoors
 
     const SimOutput w = run("outdoor_indoor", "waist", true);
     REQUIRE(!w.gnss.empty());

@@ -42,8 +42,9 @@ inline std::vector<NavState> integrate(const std::vector<pn_imu_t>& imu, size_t 
         const Eigen::Vector3d f0(imu[k].accel_mps2), f1(imu[k + 1].accel_mps2);
         const Eigen::Vector3d phi = 0.5 * (w0 + w1) * dt + w0.cross(w1) * (dt * dt / 12.0);
         const double angle = phi.norm();
-        const Eigen::Quaterniond dq =
-            angle > 1e-15 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, phi / angle)) : Eigen::Quaterniond::Identity();
+        const Eigen::Quaterniond dq = angle > 1e-15
+                                          ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, phi / angle))
+                                          : Eigen::Quaterniond::Identity();
         const Eigen::Quaterniond q1 = (s.q_enu_from_body * dq).normalized();
         const Eigen::Vector3d a0 = s.q_enu_from_body * f0 + g, a1 = q1 * f1 + g;
         const Eigen::Vector3d v1 = s.v_enu_mps + 0.5 * (a0 + a1) * dt;

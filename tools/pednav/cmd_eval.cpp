@@ -33,20 +33,29 @@ int pednav_cmd_eval(const std::vector<std::string>& args) {
                 if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
                 return args[++i];
             };
-            if (a == "--track") track_path = value();
-            else if (a == "--truth") truth_path = value();
-            else if (a == "--kind") kind = value();
-            else if (a == "--align") align_name = value();
-            else if (a == "--fit-points") options.fit_points = static_cast<size_t>(std::strtoul(value().c_str(), nullptr, 10));
-            else if (a == "--steps") steps_path = value();
-            else if (a == "--json") json = true;
+            if (a == "--track")
+                track_path = value();
+            else if (a == "--truth")
+                truth_path = value();
+            else if (a == "--kind")
+                kind = value();
+            else if (a == "--align")
+                align_name = value();
+            else if (a == "--fit-points")
+                options.fit_points = static_cast<size_t>(std::strtoul(value().c_str(), nullptr, 10));
+            else if (a == "--steps")
+                steps_path = value();
+            else if (a == "--json")
+                json = true;
             else if (a == "--help" || a == "-h") {
                 std::fputs(kUsage, stdout);
                 return 0;
-            } else throw std::invalid_argument("unknown option " + a);
+            } else
+                throw std::invalid_argument("unknown option " + a);
         }
         if (track_path.empty()) throw std::invalid_argument("--track is required");
-        if (truth_path.empty() && kind.rfind("loop", 0) != 0) throw std::invalid_argument("--truth is required");
+        if (truth_path.empty() && kind.rfind("loop", 0) != 0)
+            throw std::invalid_argument("--truth is required");
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "pednav eval: %s\n%s", e.what(), kUsage);
         return 2;
@@ -58,13 +67,19 @@ int pednav_cmd_eval(const std::vector<std::string>& args) {
             track.has_steps = true;
         }
         const Truth truth = read_truth(truth_path, kind);
-        if (!align_name.empty()) options.alignment = parse_alignment(align_name);
-        else if (truth.kind == TruthKind::footprints) options.alignment = Alignment::fitted;
-        else if (truth.kind == TruthKind::ipin_posi) options.alignment = Alignment::none;
-        else options.alignment = Alignment::start_point;
+        if (!align_name.empty())
+            options.alignment = parse_alignment(align_name);
+        else if (truth.kind == TruthKind::footprints)
+            options.alignment = Alignment::fitted;
+        else if (truth.kind == TruthKind::ipin_posi)
+            options.alignment = Alignment::none;
+        else
+            options.alignment = Alignment::start_point;
         const Metrics m = evaluate(track, truth, options);
-        if (json) std::printf("%s\n", to_json(m).dump(2).c_str());
-        else std::fputs(format_table(m).c_str(), stdout);
+        if (json)
+            std::printf("%s\n", to_json(m).dump(2).c_str());
+        else
+            std::fputs(format_table(m).c_str(), stdout);
         return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "pednav eval: %s\n", e.what());

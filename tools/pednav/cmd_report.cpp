@@ -30,7 +30,8 @@ using namespace pednav;
 const char* kUsage =
     "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,waist] [--only TEXT] [--seed N]\n"
     "                     [--no-recordings] [--no-sim] [--plugin-dir DIR]\n"
-    "  --data    the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the build)\n"
+    "  --data    the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the "
+    "build)\n"
     "  --only    run only the walks whose name contains TEXT\n"
     "Writes DIR/accuracy.md, DIR/accuracy.json and DIR/plots/<mount>-<walk>.svg.\n";
 
@@ -40,17 +41,18 @@ bool exists(const std::string& p) {
 }
 
 void make_dir(const std::string& p) {
-    if (::mkdir(p.c_str(), 0777) != 0 && errno != EEXIST) throw std::runtime_error("cannot create " + p + ": " + std::strerror(errno));
+    if (::mkdir(p.c_str(), 0777) != 0 && errno != EEXIST)
+        throw std::runtime_error("cannot create " + p + ": " + std::strerror(errno));
 }
 
 // One walk to run: a shared recording with its truth, or a simulated route.
 struct Walk {
     std::string name, mount;
-    std::string input;                 // recording path (empty: simulated)
-    std::string route;                 // built-in route name (simulated)
+    std::string input;  // recording path (empty: simulated)
+    std::string route;  // built-in route name (simulated)
     eval::Truth truth;
     eval::Alignment alignment = eval::Alignment::start_point;
-    bool give_start = false;           // start the engine at the truth's start point and heading
+    bool give_start = false;  // start the engine at the truth's start point and heading
 };
 
 struct Result {
@@ -76,22 +78,28 @@ std::vector<Walk> recording_walks(const std::string& data, Skip skip) {
     for (int n : {33, 35, 39, 42, 44}) {
         const std::string base = kor + std::to_string(n);
         if (!exists(base + ".csv")) continue;
-        add({"koroglu-" + std::to_string(n), "foot", base + ".csv", "", {}, eval::Alignment::fitted, false}, base + "_gcp.csv",
-            [&] { return eval::read_koroglu_gcp(base + "_gcp.csv"); });
+        add({"koroglu-" + std::to_string(n), "foot", base + ".csv", "", {}, eval::Alignment::fitted, false},
+            base + "_gcp.csv", [&] { return eval::read_koroglu_gcp(base + "_gcp.csv"); });
     }
     for (const char* name : {"short_walk", "long_walk"}) {
         const std::string path = data + "/xio-gait-ngimu/" + name + ".csv";
         if (!exists(path)) continue;
-        add({std::string("xio-") + name, "foot", path, "", eval::make_loop_truth(), eval::Alignment::none, false}, "",
-            [] { return eval::Truth{}; });
+        add({std::string("xio-") + name, "foot", path, "", eval::make_loop_truth(), eval::Alignment::none,
+             false},
+            "", [] { return eval::Truth{}; });
     }
     for (const char* trial : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
         const std::string base = data + "/ipol-gait-waist-feet/" + trial;
         if (!exists(base + ".json")) continue;
         for (const std::string part : {"lf", "rf", "lb"}) {
             const std::string feet = part == "lb" ? "both" : (part == "lf" ? "left" : "right");
-            add({std::string("ipol-") + trial + "-" + part, part == "lb" ? "waist" : "foot", base + "_" + part + ".txt", "", {},
-                 eval::Alignment::none, false},
+            add({std::string("ipol-") + trial + "-" + part,
+                 part == "lb" ? "waist" : "foot",
+                 base + "_" + part + ".txt",
+                 "",
+                 {},
+                 eval::Alignment::none,
+                 false},
                 base + ".json", [&] { return eval::read_ipol_steps(base + ".json", 100.0, 10.0, feet); });
         }
     }
@@ -133,7 +141,8 @@ eval::Truth truth_of(const sim::SimOutput& out, const sim::Route& route) {
     return t;
 }
 
-Result run_walk(const Walk& walk, const std::string& config, const std::vector<std::string>& plugin_dirs, uint64_t seed) {
+Result run_walk(const Walk& walk, const std::string& config, const std::vector<std::string>& plugin_dirs,
+                uint64_t seed) {
     Result r;
     r.walk = walk;
     ReplayOptions o;
@@ -162,7 +171,8 @@ Result run_walk(const Walk& walk, const std::string& config, const std::vector<s
         o.start_enu_m[1] = walk.truth.start_y_m;
         o.heading_deg = walk.truth.start_heading_deg;
     }
-    if (!records.empty()) r.duration_s = static_cast<double>(records.back()->t_ns - records.front()->t_ns) * 1e-9;
+    if (!records.empty())
+        r.duration_s = static_cast<double>(records.back()->t_ns - records.front()->t_ns) * 1e-9;
     const ReplayResult rr = replay(o, records);
     if (!rr.error.empty()) r.error = rr.error;
     if (rr.positions.empty()) {
@@ -170,14 +180,16 @@ Result run_walk(const Walk& walk, const std::string& config, const std::vector<s
         return r;
     }
     eval::Track track = eval::track_from_positions(rr.positions);
-    track.step_times_s = walk.mount == "foot" && !rr.strides.empty() ? eval::step_times_from_strides(rr.strides)
-                                                                     : eval::step_times_from_steps(rr.steps);
+    track.step_times_s = walk.mount == "foot" && !rr.strides.empty()
+                             ? eval::step_times_from_strides(rr.strides)
+                             : eval::step_times_from_steps(rr.steps);
     track.has_steps = true;
     eval::EvalOptions eo;
     eo.alignment = walk.alignment;
     eo.fit_points = 5;
     r.metrics = eval::evaluate(track, r.walk.truth, eo);
-    r.plot = plot::render_walk(plot::walk_plot(walk.mount + " / " + walk.name, track, &r.walk.truth, &r.metrics));
+    r.plot =
+        plot::render_walk(plot::walk_plot(walk.mount + " / " + walk.name, track, &r.walk.truth, &r.metrics));
     return r;
 }
 
@@ -189,31 +201,38 @@ std::string f(double v, int decimals = 2) {
 }
 
 std::string markdown(const std::vector<Result>& results, uint64_t seed) {
-    std::string md = "# Accuracy\n\nGenerated by `pednav report`. Every walk runs through the mount's preset "
-                     "(`configs/<mount>.json`) with the real plugins. Horizontal errors in metres at the truth's "
-                     "checkpoints (simulated walks: every 0.1 s; koroglu: every footprint, after one rotation fitted on "
-                     "the first 5 strides; humolire: every landmark, started at the known start point and heading). "
-                     "Simulated walks: `pednav sim` built-in routes, seed " + std::to_string(seed) +
-                     ", consumer-grade sensor errors, start heading given. Definitions: docs/metrics.md.\n\n";
-    md += "| mount | walk | truth | time (s) | distance (m) | checkpoints | mean | median | p75 | max | final | loop closure (%) | "
-          "height error (m) | steps (est / truth) | legs (%) |\n";
+    std::string md =
+        "# Accuracy\n\nGenerated by `pednav report`. Every walk runs through the mount's preset "
+        "(`configs/<mount>.json`) with the real plugins. Horizontal errors in metres at the truth's "
+        "checkpoints (simulated walks: every 0.1 s; koroglu: every footprint, after one rotation fitted on "
+        "the first 5 strides; humolire: every landmark, started at the known start point and heading). "
+        "Simulated walks: `pednav sim` built-in routes, seed " +
+        std::to_string(seed) +
+        ", consumer-grade sensor errors, start heading given. Definitions: docs/metrics.md.\n\n";
+    md +=
+        "| mount | walk | truth | time (s) | distance (m) | checkpoints | mean | median | p75 | max | final "
+        "| loop closure (%) | "
+        "height error (m) | steps (est / truth) | legs (%) |\n";
     md += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
     for (const Result& r : results) {
         const eval::Metrics& m = r.metrics;
-        if (!r.error.empty() && m.checkpoints == 0 && !std::isfinite(m.loop_closure_pct) && m.leg_lengths_m.empty()) {
-            md += "| " + r.walk.mount + " | " + r.walk.name + " | " + eval::truth_kind_name(r.walk.truth.kind) +
-                  " | " + f(r.duration_s, 0) + " | failed: " + r.error + " |||||||||||\n";
+        if (!r.error.empty() && m.checkpoints == 0 && !std::isfinite(m.loop_closure_pct) &&
+            m.leg_lengths_m.empty()) {
+            md += "| " + r.walk.mount + " | " + r.walk.name + " | " +
+                  eval::truth_kind_name(r.walk.truth.kind) + " | " + f(r.duration_s, 0) +
+                  " | failed: " + r.error + " |||||||||||\n";
             continue;
         }
         std::string legs;
         for (double e : m.leg_errors_pct) legs += (legs.empty() ? "" : ", ") + f(e, 1);
-        md += "| " + r.walk.mount + " | " + r.walk.name + " | " + eval::truth_kind_name(r.walk.truth.kind) + " | " +
-              f(r.duration_s, 0) + " | " + f(m.distance_m, 1) + " | " + std::to_string(m.checkpoints) + " | " +
-              f(m.horizontal_m.mean) + " | " + f(m.horizontal_m.median) + " | " + f(m.horizontal_m.p75) + " | " +
-              f(m.horizontal_m.max) + " | " + f(m.final_error_m) + " | " + f(m.loop_closure_pct, 3) + " | " +
-              f(m.height_error_mean_m) + " | " + (m.step_count >= 0 ? std::to_string(m.step_count) : "-") + " / " +
-              (m.truth_step_count >= 0 ? std::to_string(m.truth_step_count) : "-") + " | " + (legs.empty() ? "-" : legs) +
-              " |\n";
+        md += "| " + r.walk.mount + " | " + r.walk.name + " | " + eval::truth_kind_name(r.walk.truth.kind) +
+              " | " + f(r.duration_s, 0) + " | " + f(m.distance_m, 1) + " | " +
+              std::to_string(m.checkpoints) + " | " + f(m.horizontal_m.mean) + " | " +
+              f(m.horizontal_m.median) + " | " + f(m.horizontal_m.p75) + " | " + f(m.horizontal_m.max) +
+              " | " + f(m.final_error_m) + " | " + f(m.loop_closure_pct, 3) + " | " +
+              f(m.height_error_mean_m) + " | " + (m.step_count >= 0 ? std::to_string(m.step_count) : "-") +
+              " / " + (m.truth_step_count >= 0 ? std::to_string(m.truth_step_count) : "-") + " | " +
+              (legs.empty() ? "-" : legs) + " |\n";
     }
     // Percentiles across walks, per mount.
     std::map<std::string, std::map<std::string, std::vector<double>>> by_mount;
@@ -223,27 +242,35 @@ std::string markdown(const std::vector<Result>& results, uint64_t seed) {
         if (std::isfinite(m.horizontal_m.mean)) v["mean horizontal error (m)"].push_back(m.horizontal_m.mean);
         if (std::isfinite(m.horizontal_m.p75)) v["p75 horizontal error (m)"].push_back(m.horizontal_m.p75);
         if (std::isfinite(m.final_error_m)) v["final error (m)"].push_back(m.final_error_m);
-        if (std::isfinite(m.loop_closure_pct)) v["loop closure (% of distance)"].push_back(m.loop_closure_pct);
+        if (std::isfinite(m.loop_closure_pct))
+            v["loop closure (% of distance)"].push_back(m.loop_closure_pct);
         for (double e : m.leg_errors_pct) v["leg length error (abs %)"].push_back(std::fabs(e));
         if (m.step_count >= 0 && m.truth_step_count > 0)
-            v["step count error (abs %)"].push_back(100.0 * std::abs(m.step_count - m.truth_step_count) / m.truth_step_count);
+            v["step count error (abs %)"].push_back(100.0 * std::abs(m.step_count - m.truth_step_count) /
+                                                    m.truth_step_count);
     }
-    md += "\n## Across walks\n\n| mount | metric | walks | median | p75 | p95 | max |\n|---|---|---:|---:|---:|---:|---:|\n";
+    md +=
+        "\n## Across walks\n\n| mount | metric | walks | median | p75 | p95 | max "
+        "|\n|---|---|---:|---:|---:|---:|---:|\n";
     for (const auto& [mount, metrics] : by_mount)
         for (const auto& [name, v] : metrics)
-            md += "| " + mount + " | " + name + " | " + std::to_string(v.size()) + " | " + f(eval::percentile(v, 50), 3) +
-                  " | " + f(eval::percentile(v, 75), 3) + " | " + f(eval::percentile(v, 95), 3) + " | " +
-                  f(eval::percentile(v, 100), 3) + " |\n";
+            md += "| " + mount + " | " + name + " | " + std::to_string(v.size()) + " | " +
+                  f(eval::percentile(v, 50), 3) + " | " + f(eval::percentile(v, 75), 3) + " | " +
+                  f(eval::percentile(v, 95), 3) + " | " + f(eval::percentile(v, 100), 3) + " |\n";
     return md;
 }
 
 // One line per walk on stderr while the report runs.
 std::string summary(const eval::Metrics& m) {
     std::string s;
-    if (m.checkpoints > 0) s += "mean error " + f(m.horizontal_m.mean) + " m, p75 " + f(m.horizontal_m.p75) + " m; ";
+    if (m.checkpoints > 0)
+        s += "mean error " + f(m.horizontal_m.mean) + " m, p75 " + f(m.horizontal_m.p75) + " m; ";
     if (std::isfinite(m.loop_closure_pct)) s += "loop closure " + f(m.loop_closure_pct, 3) + " %; ";
-    for (size_t i = 0; i < m.leg_errors_pct.size(); ++i) s += "leg " + std::to_string(i + 1) + " " + f(m.leg_errors_pct[i], 1) + " %; ";
-    if (m.step_count >= 0) s += "steps " + std::to_string(m.step_count) + " / " + (m.truth_step_count >= 0 ? std::to_string(m.truth_step_count) : "-");
+    for (size_t i = 0; i < m.leg_errors_pct.size(); ++i)
+        s += "leg " + std::to_string(i + 1) + " " + f(m.leg_errors_pct[i], 1) + " %; ";
+    if (m.step_count >= 0)
+        s += "steps " + std::to_string(m.step_count) + " / " +
+             (m.truth_step_count >= 0 ? std::to_string(m.truth_step_count) : "-");
     return s;
 }
 
@@ -267,13 +294,20 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
                 if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
                 return args[++i];
             };
-            if (a == "--out") out = value();
-            else if (a == "--data") data = value();
-            else if (a == "--only") only = value();
-            else if (a == "--seed") seed = std::strtoull(value().c_str(), nullptr, 10);
-            else if (a == "--plugin-dir") plugin_dirs.push_back(value());
-            else if (a == "--no-recordings") recordings = false;
-            else if (a == "--no-sim") simulated = false;
+            if (a == "--out")
+                out = value();
+            else if (a == "--data")
+                data = value();
+            else if (a == "--only")
+                only = value();
+            else if (a == "--seed")
+                seed = std::strtoull(value().c_str(), nullptr, 10);
+            else if (a == "--plugin-dir")
+                plugin_dirs.push_back(value());
+            else if (a == "--no-recordings")
+                recordings = false;
+            else if (a == "--no-sim")
+                simulated = false;
             else if (a == "--mounts") {
                 mounts.clear();
                 std::string list = value() + ",";
@@ -282,7 +316,8 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             } else if (a == "--help" || a == "-h") {
                 std::fputs(kUsage, stdout);
                 return 0;
-            } else throw std::invalid_argument("unknown option " + a);
+            } else
+                throw std::invalid_argument("unknown option " + a);
         }
         if (out.empty()) throw std::invalid_argument("--out is required");
     } catch (const std::invalid_argument& e) {
@@ -296,15 +331,20 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
         std::map<std::string, std::string> configs;
         for (const std::string& m : mounts) {
             const std::string preset = cli::default_config_dir() + "/" + m + ".json";
-            if (exists(preset)) configs[m] = cli::read_text_file(preset);
-            else std::fprintf(stderr, "pednav report: no preset for mount %s (%s): skipped\n", m.c_str(), preset.c_str());
+            if (exists(preset))
+                configs[m] = cli::read_text_file(preset);
+            else
+                std::fprintf(stderr, "pednav report: no preset for mount %s (%s): skipped\n", m.c_str(),
+                             preset.c_str());
         }
         std::vector<Walk> walks;
         if (recordings) {
-            if (!exists(data)) std::fprintf(stderr, "pednav report: no shared recordings at %s: skipped\n", data.c_str());
-            else walks = recording_walks(data, [](const std::string& what, const std::exception& e) {
-                std::fprintf(stderr, "pednav report: %s: %s (skipped)\n", what.c_str(), e.what());
-            });
+            if (!exists(data))
+                std::fprintf(stderr, "pednav report: no shared recordings at %s: skipped\n", data.c_str());
+            else
+                walks = recording_walks(data, [](const std::string& what, const std::exception& e) {
+                    std::fprintf(stderr, "pednav report: %s: %s (skipped)\n", what.c_str(), e.what());
+                });
         }
         if (simulated)
             for (const std::string& m : mounts)
@@ -313,7 +353,8 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
         std::vector<Result> results;
         nlohmann::json js = nlohmann::json::array();
         for (const Walk& w : walks) {
-            if (!configs.count(w.mount) || (!only.empty() && w.name.find(only) == std::string::npos)) continue;
+            if (!configs.count(w.mount) || (!only.empty() && w.name.find(only) == std::string::npos))
+                continue;
             std::fprintf(stderr, "%-6s %-28s ", w.mount.c_str(), w.name.c_str());
             Result r;
             try {
@@ -327,11 +368,13 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
                 std::ofstream(out + "/" + file) << r.plot;
                 r.plot = file;
             }
-            std::fprintf(stderr, "%s\n", r.error.empty() ? summary(r.metrics).c_str() : ("error: " + r.error).c_str());
+            std::fprintf(stderr, "%s\n",
+                         r.error.empty() ? summary(r.metrics).c_str() : ("error: " + r.error).c_str());
             nlohmann::json j = eval::to_json(r.metrics);
             j["walk"] = w.name;
             j["mount"] = w.mount;
-            j["duration_s"] = std::isfinite(r.duration_s) ? nlohmann::json(r.duration_s) : nlohmann::json(nullptr);
+            j["duration_s"] =
+                std::isfinite(r.duration_s) ? nlohmann::json(r.duration_s) : nlohmann::json(nullptr);
             j["plot"] = r.plot;
             j["error"] = r.error;
             js.push_back(j);

@@ -38,15 +38,24 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
                 if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
                 return args[++i];
             };
-            if (a == "--route") route_arg = value();
-            else if (a == "--out") out_dir = value();
-            else if (a == "--mount") options.mount = value();
-            else if (a == "--rate") options.rate_hz = to_number(value(), a);
-            else if (a == "--seed") options.seed = static_cast<uint64_t>(to_number(value(), a));
-            else if (a == "--no-errors") options.sensor_errors = false;
-            else if (a == "--no-mag") options.with_mag = false;
-            else if (a == "--no-baro") options.with_baro = false;
-            else if (a == "--no-gnss") options.with_gnss = false;
+            if (a == "--route")
+                route_arg = value();
+            else if (a == "--out")
+                out_dir = value();
+            else if (a == "--mount")
+                options.mount = value();
+            else if (a == "--rate")
+                options.rate_hz = to_number(value(), a);
+            else if (a == "--seed")
+                options.seed = static_cast<uint64_t>(to_number(value(), a));
+            else if (a == "--no-errors")
+                options.sensor_errors = false;
+            else if (a == "--no-mag")
+                options.with_mag = false;
+            else if (a == "--no-baro")
+                options.with_baro = false;
+            else if (a == "--no-gnss")
+                options.with_gnss = false;
             else if (a == "--mounting") {
                 std::stringstream ss(value());
                 std::string part;
@@ -67,7 +76,8 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
                 throw std::invalid_argument("unknown option " + a);
             }
         }
-        if (route_arg.empty() || out_dir.empty()) throw std::invalid_argument("--route and --out are required");
+        if (route_arg.empty() || out_dir.empty())
+            throw std::invalid_argument("--route and --out are required");
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "pednav sim: %s\n%s", e.what(), kUsage);
         return 2;
@@ -83,9 +93,10 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
         }
         const SimOutput out = simulate(route, options);
         write_outputs(out, route, out_dir);
-        std::printf("%s, %s mount, %.0f Hz: %.1f s, %.1f m, %zu steps, %zu GNSS fixes -> %s\n", route.name.c_str(),
-                    options.mount.c_str(), options.rate_hz, out.truth.empty() ? 0.0 : out.truth.back().t_s,
-                    out.distance_m, out.step_times_s.size(), out.gnss.size(), out_dir.c_str());
+        std::printf("%s, %s mount, %.0f Hz: %.1f s, %.1f m, %zu steps, %zu GNSS fixes -> %s\n",
+                    route.name.c_str(), options.mount.c_str(), options.rate_hz,
+                    out.truth.empty() ? 0.0 : out.truth.back().t_s, out.distance_m, out.step_times_s.size(),
+                    out.gnss.size(), out_dir.c_str());
         return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "pednav sim: %s\n", e.what());

@@ -22,7 +22,8 @@ const char* alignment_name(Alignment a) {
     return "?";
 }
 
-double procrustes_rotation_rad(const std::vector<std::array<double, 2>>& a, const std::vector<std::array<double, 2>>& b) {
+double procrustes_rotation_rad(const std::vector<std::array<double, 2>>& a,
+                               const std::vector<std::array<double, 2>>& b) {
     // Minimise sum |R a_i - b_i|^2 over rotations R(theta): theta = atan2(sum a x b, sum a . b).
     double s_cross = 0.0, s_dot = 0.0;
     for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
@@ -106,7 +107,8 @@ Track apply_alignment(const Track& track, const AlignmentResult& a) {
         p.pos_m[1] = s * x + c * y + a.to_m[1];
         p.pos_m[2] += a.z_offset_m;
         // Heading is clockwise, the rotation counter-clockwise.
-        if (std::isfinite(p.heading_deg)) p.heading_deg = std::fmod(p.heading_deg - a.rotation_deg + 720.0, 360.0);
+        if (std::isfinite(p.heading_deg))
+            p.heading_deg = std::fmod(p.heading_deg - a.rotation_deg + 720.0, 360.0);
     }
     return out;
 }

@@ -35,7 +35,8 @@ TrackSample Track::at(double t_s) const {
 double Track::length_m() const {
     double len = 0.0;
     for (size_t i = 1; i < samples.size(); ++i)
-        len += std::hypot(samples[i].pos_m[0] - samples[i - 1].pos_m[0], samples[i].pos_m[1] - samples[i - 1].pos_m[1]);
+        len += std::hypot(samples[i].pos_m[0] - samples[i - 1].pos_m[0],
+                          samples[i].pos_m[1] - samples[i - 1].pos_m[1]);
     return len;
 }
 
@@ -53,14 +54,17 @@ Track read_track_csv(const std::string& path) {
         const std::vector<std::string> f = split(line, ',');
         if (header.empty()) {
             header = f;
-            ct = column(header, "t"), cx = column(header, "x"), cy = column(header, "y"), cz = column(header, "z");
+            ct = column(header, "t"), cx = column(header, "x"), cy = column(header, "y"),
+            cz = column(header, "z");
             ch = column(header, "heading_deg"), cf = column(header, "floor");
             if (ct < 0 || cx < 0 || cy < 0)
-                throw std::runtime_error(path + ":" + std::to_string(n) + ": a track needs the columns t, x, y");
+                throw std::runtime_error(path + ":" + std::to_string(n) +
+                                         ": a track needs the columns t, x, y");
             continue;
         }
         if (f.size() < header.size())
-            throw std::runtime_error(path + ":" + std::to_string(n) + ": expected " + std::to_string(header.size()) + " columns");
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": expected " +
+                                     std::to_string(header.size()) + " columns");
         TrackSample s;
         s.t_s = to_double(f[ct], path, n);
         s.pos_m[0] = to_double(f[cx], path, n);

@@ -1,11 +1,11 @@
 #include <pednav_eval/truth_readers.hpp>
 
+#include <sys/stat.h>
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <sys/stat.h>
 
 #include <nlohmann/json.hpp>
 
@@ -77,7 +77,8 @@ nlohmann::json read_json(const std::string& path) {
 }
 
 double json_number(const nlohmann::json& j, const std::string& key, const std::string& path) {
-    if (!j.contains(key) || !j[key].is_number()) throw std::runtime_error(path + ": missing number '" + key + "'");
+    if (!j.contains(key) || !j[key].is_number())
+        throw std::runtime_error(path + ": missing number '" + key + "'");
     return j[key].get<double>();
 }
 
@@ -104,10 +105,12 @@ Truth read_sim_truth(const std::string& path, double period_s) {
             header = f;
             ct = column(f, "t"), cx = column(f, "x"), cy = column(f, "y"), cz = column(f, "z");
             cstep = column(f, "step"), cfloor = column(f, "floor"), chead = column(f, "heading_deg");
-            if (ct < 0 || cx < 0 || cy < 0 || cz < 0) throw std::runtime_error(path + ": not a pednav sim truth file");
+            if (ct < 0 || cx < 0 || cy < 0 || cz < 0)
+                throw std::runtime_error(path + ": not a pednav sim truth file");
             continue;
         }
-        if (f.size() < header.size()) throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
+        if (f.size() < header.size())
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
         TruthPoint p;
         p.t_s = to_double(f[ct], path, n);
         p.x_m = to_double(f[cx], path, n);
@@ -133,7 +136,8 @@ Truth read_sim_truth(const std::string& path, double period_s) {
     if (t.points.back().t_s != last.t_s) t.points.push_back(last);
     t.distance_m = dist;
     const TruthPoint& a = t.points.front();
-    t.closed_loop = std::hypot(last.x_m - a.x_m, last.y_m - a.y_m) < 0.05 && std::fabs(last.z_m - a.z_m) < 0.05;
+    t.closed_loop =
+        std::hypot(last.x_m - a.x_m, last.y_m - a.y_m) < 0.05 && std::fabs(last.z_m - a.z_m) < 0.05;
     if (t.closed_loop) {
         t.loop_start_s = a.t_s;
         t.loop_end_s = last.t_s;
@@ -146,7 +150,8 @@ Truth read_sim_truth(const std::string& path, double period_s) {
             for (const auto& w : r["walls"]) {
                 WallLine line_;
                 line_.floor = w.value("floor", 0);
-                for (const auto& p : w.at("points_enu_m")) line_.points_m.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
+                for (const auto& p : w.at("points_enu_m"))
+                    line_.points_m.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
                 t.walls.push_back(std::move(line_));
             }
     }
@@ -169,10 +174,12 @@ Truth read_koroglu_gcp(const std::string& path) {
         if (header.empty()) {
             header = f;
             cx = column(f, "gcp_x_m"), cy = column(f, "gcp_y_m"), ct = column(f, "timestamp_s");
-            if (cx < 0 || cy < 0 || ct < 0) throw std::runtime_error(path + ": expected gcp_x_m, gcp_y_m, timestamp_s columns");
+            if (cx < 0 || cy < 0 || ct < 0)
+                throw std::runtime_error(path + ": expected gcp_x_m, gcp_y_m, timestamp_s columns");
             continue;
         }
-        if (f.size() < header.size()) throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
+        if (f.size() < header.size())
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
         TruthPoint p;
         p.t_s = to_double(f[ct], path, n);
         p.x_m = to_double(f[cx], path, n);
@@ -195,7 +202,8 @@ Truth read_humolire(const std::string& dir, bool flip_y) {
     t.kind = TruthKind::landmarks;
     t.name = dir;
     const double sy = flip_y ? -1.0 : 1.0;
-    if (!kp.contains("starting_position")) throw std::runtime_error(kp_path + ": missing 'starting_position'");
+    if (!kp.contains("starting_position"))
+        throw std::runtime_error(kp_path + ": missing 'starting_position'");
     t.start_x_m = json_number(kp["starting_position"], "x", kp_path);
     t.start_y_m = sy * json_number(kp["starting_position"], "y", kp_path);
     // starting_heading: degrees counter-clockwise from the map's x axis (upstream: x += L cos, y += L sin).
@@ -240,8 +248,10 @@ Truth read_humolire(const std::string& dir, bool flip_y) {
         for (const auto& link : mj.at("links")) {
             WallLine w;
             w.floor = link.value("layer", 0);
-            w.points_m.push_back({scale * link.at("node0").at("x").get<double>(), sy * scale * link.at("node0").at("y").get<double>()});
-            w.points_m.push_back({scale * link.at("node1").at("x").get<double>(), sy * scale * link.at("node1").at("y").get<double>()});
+            w.points_m.push_back({scale * link.at("node0").at("x").get<double>(),
+                                  sy * scale * link.at("node0").at("y").get<double>()});
+            w.points_m.push_back({scale * link.at("node1").at("x").get<double>(),
+                                  sy * scale * link.at("node1").at("y").get<double>()});
             t.walls.push_back(std::move(w));
         }
     }
@@ -260,8 +270,10 @@ Truth read_ipin_posi(const std::string& path) {
         ++n;
         if (line.rfind("POSI;", 0) != 0) continue;
         const std::vector<std::string> f = split(line, ';');
-        if (f.size() < 6) throw std::runtime_error(path + ":" + std::to_string(n) + ": POSI needs t;counter;lat;lon;floor");
-        const double time = to_double(f[1], path, n), lat = to_double(f[3], path, n), lon = to_double(f[4], path, n);
+        if (f.size() < 6)
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": POSI needs t;counter;lat;lon;floor");
+        const double time = to_double(f[1], path, n), lat = to_double(f[3], path, n),
+                     lon = to_double(f[4], path, n);
         if (!std::isfinite(lat0)) lat0 = lat, lon0 = lon;
         // Local tangent plane about the first point (WGS-84 radii of curvature).
         const double a = 6378137.0, e2 = 6.69437999014e-3, phi = lat0 * M_PI / 180.0;
@@ -296,8 +308,10 @@ Truth read_ipol_steps(const std::string& path, double rate_hz, double leg_length
     t.kind = TruthKind::step_events;
     t.name = path;
     try {
-        const double tb0 = j.at("TrialBoundaries").at(0).get<double>(), tb1 = j.at("TrialBoundaries").at(1).get<double>();
-        const double ut0 = j.at("UTurnBoundaries").at(0).get<double>(), ut1 = j.at("UTurnBoundaries").at(1).get<double>();
+        const double tb0 = j.at("TrialBoundaries").at(0).get<double>(),
+                     tb1 = j.at("TrialBoundaries").at(1).get<double>();
+        const double ut0 = j.at("UTurnBoundaries").at(0).get<double>(),
+                     ut1 = j.at("UTurnBoundaries").at(1).get<double>();
         for (const char* key : {"LeftFootEvents", "RightFootEvents"}) {
             if ((feet == "left" && key[0] != 'L') || (feet == "right" && key[0] != 'R')) continue;
             for (const auto& ev : j.at(key)) {
@@ -323,10 +337,14 @@ Truth read_truth(const std::string& path, const std::string& kind_in) {
         return make_loop_truth(colon == std::string::npos ? NAN : std::stod(kind.substr(colon + 1)));
     }
     if (kind == "auto") {
-        if (is_dir(path) && exists(path + "/keypoints.json")) kind = "humolire";
-        else if (is_dir(path) && exists(path + "/truth.csv")) return read_sim_truth(path + "/truth.csv");
-        else if (ends_with(path, "_gcp.csv")) kind = "koroglu";
-        else if (ends_with(path, ".json")) kind = "ipol";
+        if (is_dir(path) && exists(path + "/keypoints.json"))
+            kind = "humolire";
+        else if (is_dir(path) && exists(path + "/truth.csv"))
+            return read_sim_truth(path + "/truth.csv");
+        else if (ends_with(path, "_gcp.csv"))
+            kind = "koroglu";
+        else if (ends_with(path, ".json"))
+            kind = "ipol";
         else {
             std::ifstream in = open(path);
             std::string line;
@@ -343,7 +361,8 @@ Truth read_truth(const std::string& path, const std::string& kind_in) {
     if (kind == "humolire") return read_humolire(path);
     if (kind == "ipin") return read_ipin_posi(path);
     if (kind == "ipol") return read_ipol_steps(path);
-    throw std::runtime_error("unknown truth kind '" + kind_in + "' (sim, koroglu, humolire, ipin, loop[:LENGTH_M], ipol, auto)");
+    throw std::runtime_error("unknown truth kind '" + kind_in +
+                             "' (sim, koroglu, humolire, ipin, loop[:LENGTH_M], ipol, auto)");
 }
 
 }  // namespace pednav::eval

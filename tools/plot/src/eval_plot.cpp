@@ -32,11 +32,12 @@ WalkPlot walk_plot(const std::string& title, const eval::Track& raw, const eval:
     if (metrics && !metrics->t_s.empty()) {
         Series e;
         char label[96];
-        std::snprintf(label, sizeof label, "horizontal error (mean %.2f m, p75 %.2f m)", metrics->horizontal_m.mean,
-                      metrics->horizontal_m.p75);
+        std::snprintf(label, sizeof label, "horizontal error (mean %.2f m, p75 %.2f m)",
+                      metrics->horizontal_m.mean, metrics->horizontal_m.p75);
         e.label = label;
         e.color = "#d62728";
-        for (size_t i = 0; i < metrics->t_s.size(); ++i) e.points.push_back({metrics->t_s[i], metrics->error_m[i]});
+        for (size_t i = 0; i < metrics->t_s.size(); ++i)
+            e.points.push_back({metrics->t_s[i], metrics->error_m[i]});
         e.markers = metrics->t_s.size() < 200;
         p.error.series.push_back(e);
     }

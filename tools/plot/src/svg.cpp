@@ -50,7 +50,8 @@ void Svg::polyline(const std::vector<Point>& pts, const Stroke& stroke) {
     size_t count = 0;
     auto flush = [&]() {
         if (count >= 2)
-            body_ += "<polyline fill=\"none\"" + stroke_attrs(stroke) + " stroke-linejoin=\"round\" points=\"" + piece + "\"/>\n";
+            body_ += "<polyline fill=\"none\"" + stroke_attrs(stroke) +
+                     " stroke-linejoin=\"round\" points=\"" + piece + "\"/>\n";
         piece.clear();
         count = 0;
     };
@@ -68,33 +69,36 @@ void Svg::polyline(const std::vector<Point>& pts, const Stroke& stroke) {
 
 void Svg::line(Point a, Point b, const Stroke& stroke) {
     if (!finite(a) || !finite(b)) return;
-    body_ += "<line x1=\"" + num(a[0]) + "\" y1=\"" + num(a[1]) + "\" x2=\"" + num(b[0]) + "\" y2=\"" + num(b[1]) + "\"" +
-             stroke_attrs(stroke) + "/>\n";
+    body_ += "<line x1=\"" + num(a[0]) + "\" y1=\"" + num(a[1]) + "\" x2=\"" + num(b[0]) + "\" y2=\"" +
+             num(b[1]) + "\"" + stroke_attrs(stroke) + "/>\n";
 }
 
 void Svg::rect(Point tl, double w, double h, const std::string& fill, const Stroke& stroke) {
     if (!finite(tl)) return;
-    body_ += "<rect x=\"" + num(tl[0]) + "\" y=\"" + num(tl[1]) + "\" width=\"" + num(w) + "\" height=\"" + num(h) +
-             "\" fill=\"" + xml_escape(fill) + "\"" + stroke_attrs(stroke) + "/>\n";
+    body_ += "<rect x=\"" + num(tl[0]) + "\" y=\"" + num(tl[1]) + "\" width=\"" + num(w) + "\" height=\"" +
+             num(h) + "\" fill=\"" + xml_escape(fill) + "\"" + stroke_attrs(stroke) + "/>\n";
 }
 
 void Svg::circle(Point c, double r, const std::string& fill) {
     if (!finite(c)) return;
-    body_ += "<circle cx=\"" + num(c[0]) + "\" cy=\"" + num(c[1]) + "\" r=\"" + num(r) + "\" fill=\"" + xml_escape(fill) + "\"/>\n";
+    body_ += "<circle cx=\"" + num(c[0]) + "\" cy=\"" + num(c[1]) + "\" r=\"" + num(r) + "\" fill=\"" +
+             xml_escape(fill) + "\"/>\n";
 }
 
-void Svg::text(Point at, const std::string& t, double size, const std::string& anchor, const std::string& color,
-               double rotate_deg) {
+void Svg::text(Point at, const std::string& t, double size, const std::string& anchor,
+               const std::string& color, double rotate_deg) {
     if (!finite(at)) return;
     body_ += "<text x=\"" + num(at[0]) + "\" y=\"" + num(at[1]) + "\" font-size=\"" + num(size) +
-             "\" font-family=\"sans-serif\" text-anchor=\"" + xml_escape(anchor) + "\" fill=\"" + xml_escape(color) + "\"";
-    if (rotate_deg != 0.0) body_ += " transform=\"rotate(" + num(rotate_deg) + " " + num(at[0]) + " " + num(at[1]) + ")\"";
+             "\" font-family=\"sans-serif\" text-anchor=\"" + xml_escape(anchor) + "\" fill=\"" +
+             xml_escape(color) + "\"";
+    if (rotate_deg != 0.0)
+        body_ += " transform=\"rotate(" + num(rotate_deg) + " " + num(at[0]) + " " + num(at[1]) + ")\"";
     body_ += ">" + xml_escape(t) + "</text>\n";
 }
 
 void Svg::clip_rect(const std::string& id, Point tl, double w, double h) {
-    defs_ += "<clipPath id=\"" + xml_escape(id) + "\"><rect x=\"" + num(tl[0]) + "\" y=\"" + num(tl[1]) + "\" width=\"" +
-             num(w) + "\" height=\"" + num(h) + "\"/></clipPath>\n";
+    defs_ += "<clipPath id=\"" + xml_escape(id) + "\"><rect x=\"" + num(tl[0]) + "\" y=\"" + num(tl[1]) +
+             "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\"/></clipPath>\n";
 }
 
 void Svg::begin_group(const std::string& clip_id) {
@@ -104,9 +108,10 @@ void Svg::begin_group(const std::string& clip_id) {
 void Svg::end_group() { body_ += "</g>\n"; }
 
 std::string Svg::str() const {
-    std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(w_) + "\" height=\"" + num(h_) +
-                    "\" viewBox=\"0 0 " + num(w_) + " " + num(h_) + "\">\n";
+    std::string s =
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
+        num(w_) + "\" height=\"" + num(h_) + "\" viewBox=\"0 0 " + num(w_) + " " + num(h_) + "\">\n";
     s += "<rect x=\"0\" y=\"0\" width=\"" + num(w_) + "\" height=\"" + num(h_) + "\" fill=\"#ffffff\"/>\n";
     if (!defs_.empty()) s += "<defs>\n" + defs_ + "</defs>\n";
     s += body_ + "</svg>\n";

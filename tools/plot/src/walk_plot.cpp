@@ -51,8 +51,11 @@ void legend(Svg& svg, const std::vector<Series>& series, double right_px, double
              Stroke{"#cccccc", 0.8, false, 0.9});
     for (const Series& s : series) {
         if (s.label.empty()) continue;
-        if (s.markers && s.width_px <= 0.0) svg.circle({x + 12.0, y - 4.0}, 3.0, s.color);
-        else svg.line({x, y - 4.0}, {x + 24.0, y - 4.0}, Stroke{s.color, std::max(1.5, s.width_px), s.dashed, 1.0});
+        if (s.markers && s.width_px <= 0.0)
+            svg.circle({x + 12.0, y - 4.0}, 3.0, s.color);
+        else
+            svg.line({x, y - 4.0}, {x + 24.0, y - 4.0},
+                     Stroke{s.color, std::max(1.5, s.width_px), s.dashed, 1.0});
         svg.text({x + 30.0, y}, s.label, 11.0, "start", "#222222");
         y += 16.0;
     }
@@ -78,8 +81,11 @@ void draw_map(Svg& svg, const MapPanel& panel, double ox, double oy, double w, d
     b.x0 -= pad, b.x1 += pad, b.y0 -= pad, b.y1 += pad;
     // Equal scale on both axes, centred.
     const double scale = std::min(pw / (b.x1 - b.x0), ph / (b.y1 - b.y0));
-    const double cx = ox + ml + 0.5 * (pw - scale * (b.x1 - b.x0)), cy = oy + mt + 0.5 * (ph + scale * (b.y1 - b.y0));
-    auto to_px = [&](const Point& p) { return Point{cx + (p[0] - b.x0) * scale, cy - (p[1] - b.y0) * scale}; };
+    const double cx = ox + ml + 0.5 * (pw - scale * (b.x1 - b.x0)),
+                 cy = oy + mt + 0.5 * (ph + scale * (b.y1 - b.y0));
+    auto to_px = [&](const Point& p) {
+        return Point{cx + (p[0] - b.x0) * scale, cy - (p[1] - b.y0) * scale};
+    };
     const double left = to_px({b.x0, b.y0})[0], right = to_px({b.x1, b.y0})[0];
     const double bottom = to_px({b.x0, b.y0})[1], top = to_px({b.x0, b.y1})[1];
     for (double t : nice_ticks(b.x0, b.x1, 8)) {
@@ -104,7 +110,8 @@ void draw_map(Svg& svg, const MapPanel& panel, double ox, double oy, double w, d
         std::vector<Point> px;
         for (const Point& p : thin(s.points)) px.push_back(to_px(p));
         draw_series(svg, s, px);
-        if (!s.points.empty() && s.width_px > 0.0) svg.circle(to_px(s.points.front()), 4.0, s.color);  // start
+        if (!s.points.empty() && s.width_px > 0.0)
+            svg.circle(to_px(s.points.front()), 4.0, s.color);  // start
     }
     legend(svg, panel.series, right, top);
 }
@@ -121,7 +128,8 @@ void draw_time(Svg& svg, const TimePanel& panel, double ox, double oy, double w,
     b.y1 = std::max(b.y1 * 1.05, b.y0 + 1e-3);
     if (b.x1 <= b.x0) b.x1 = b.x0 + 1.0;
     auto to_px = [&](const Point& p) {
-        return Point{ox + ml + (p[0] - b.x0) / (b.x1 - b.x0) * pw, oy + mt + ph - (p[1] - b.y0) / (b.y1 - b.y0) * ph};
+        return Point{ox + ml + (p[0] - b.x0) / (b.x1 - b.x0) * pw,
+                     oy + mt + ph - (p[1] - b.y0) / (b.y1 - b.y0) * ph};
     };
     const double left = ox + ml, right = ox + ml + pw, top = oy + mt, bottom = oy + mt + ph;
     for (double t : nice_ticks(b.x0, b.x1, 10)) {
@@ -158,7 +166,8 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
             step = m * mag;
             break;
         }
-    for (double k = std::ceil(lo / step); k * step <= hi + 1e-9 * step; k += 1.0) ticks.push_back(k == 0.0 ? 0.0 : k * step);
+    for (double k = std::ceil(lo / step); k * step <= hi + 1e-9 * step; k += 1.0)
+        ticks.push_back(k == 0.0 ? 0.0 : k * step);
     return ticks;
 }
 
@@ -183,7 +192,8 @@ std::string render_walk(const WalkPlot& plot) {
     for (const Series& s : plot.map.series)
         for (const Point& p : s.points) b.add(p);
     double map_h = 0.66 * w;
-    if (b.valid() && b.x1 > b.x0) map_h = std::clamp((w - 70.0) * (b.y1 - b.y0) / (b.x1 - b.x0) + 80.0, 0.35 * w, 1.1 * w);
+    if (b.valid() && b.x1 > b.x0)
+        map_h = std::clamp((w - 70.0) * (b.y1 - b.y0) / (b.x1 - b.x0) + 80.0, 0.35 * w, 1.1 * w);
     const bool time = !plot.error.series.empty();
     const double time_h = time ? 0.33 * w : 0.0, title_h = plot.title.empty() ? 0.0 : 30.0;
     Svg svg(w, title_h + map_h + time_h);

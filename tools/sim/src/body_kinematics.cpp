@@ -66,7 +66,8 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, const Route&, BodyShape sha
     double yaw_now = plan.prints[0].yaw_enu_rad;
     while (i < plan.phases.size()) {
         const FootPhase& ph = plan.phases[i];
-        const bool pause = !ph.swing && (i == 0 || i + 1 == plan.phases.size() || ph.t1_s - ph.t0_s > kPauseS);
+        const bool pause =
+            !ph.swing && (i == 0 || i + 1 == plan.phases.size() || ph.t1_s - ph.t0_s > kPauseS);
         if (pause) {
             Span s;
             s.t0 = ph.t0_s;
@@ -191,16 +192,19 @@ KinState BodyKinematics::at(double t_s) {
     const Profile roll = oscillation(shape_.roll_rad, w, ph, 1.0, 0.0);
 
     // Lateral sway along the left normal n of the walking direction: (y n)'' = y'' n + 2 y' n' + y n''.
-    const Eigen::Vector3d tang(std::cos(yaw.f), std::sin(yaw.f), 0.0), n(-std::sin(yaw.f), std::cos(yaw.f), 0.0);
+    const Eigen::Vector3d tang(std::cos(yaw.f), std::sin(yaw.f), 0.0),
+        n(-std::sin(yaw.f), std::cos(yaw.f), 0.0);
     const Eigen::Vector3d dn = -yaw.df * tang;
     const Eigen::Vector3d ddn = -yaw.ddf * tang - yaw.df * yaw.df * n;
     k.p_enu_m = Eigen::Vector3d(x.f, y.f, z.f + shape_.height_m + bounce.f) + sway.f * n;
     k.v_enu_mps = Eigen::Vector3d(x.df, y.df, z.df + bounce.df) + sway.df * n + sway.f * dn;
-    k.a_enu_mps2 = Eigen::Vector3d(x.ddf, y.ddf, z.ddf + bounce.ddf) + sway.ddf * n + 2.0 * sway.df * dn + sway.f * ddn;
+    k.a_enu_mps2 =
+        Eigen::Vector3d(x.ddf, y.ddf, z.ddf + bounce.ddf) + sway.ddf * n + 2.0 * sway.df * dn + sway.f * ddn;
     k.yaw_enu_rad = yaw.f;
     k.stance = 0;
     // Segment: the knot interval the time falls in.
-    const size_t idx = static_cast<size_t>(std::upper_bound(s.knot_t.begin(), s.knot_t.end(), tau.f) - s.knot_t.begin());
+    const size_t idx =
+        static_cast<size_t>(std::upper_bound(s.knot_t.begin(), s.knot_t.end(), tau.f) - s.knot_t.begin());
     k.segment = s.segment_at_knot[std::min(idx, s.segment_at_knot.size() - 1)];
     euler_zyx(yaw.f, pitch.f, roll.f, yaw.df, pitch.df, roll.df, k.R_enu_body, k.w_body_radps);
     return k;

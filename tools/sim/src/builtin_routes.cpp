@@ -37,8 +37,9 @@ void ring_walls(Route& r, int floor, double x0, double y0, double x1, double y1,
 Route corridor_loop() {
     Route r;
     r.name = "corridor_loop";
-    r.description = "One lap of a closed 40 m x 20 m rectangular corridor (120 m = 3 x 40 m), "
-                    "four 90-degree left turns, ground floor, ends where it starts";
+    r.description =
+        "One lap of a closed 40 m x 20 m rectangular corridor (120 m = 3 x 40 m), "
+        "four 90-degree left turns, ground floor, ends where it starts";
     r.waypoints = {wp(0, 0), wp(40, 0), wp(40, 20), wp(0, 20), wp(0, 0)};
     ring_walls(r, 0, 0, 0, 40, 20, 2.0);
     finish(r);
@@ -48,17 +49,36 @@ Route corridor_loop() {
 Route stairs() {
     Route r;
     r.name = "stairs";
-    r.description = "10 m corridor, two flights of 10 stairs up (U-shaped stairwell, 1.5 m landing) to floor 1, "
-                    "a 23 m loop on floor 1, the same two flights down, back to the start";
+    r.description =
+        "10 m corridor, two flights of 10 stairs up (U-shaped stairwell, 1.5 m landing) to floor 1, "
+        "a 23 m loop on floor 1, the same two flights down, back to the start";
     const double h1 = 10 * r.stair_rise_m, run = 10 * r.stair_run_m;  // one flight
-    r.waypoints = {wp(0, 0),          wp(10, 0),        wp(10 + run, 0, h1), wp(10 + run, 1.5, h1),
-                   wp(10, 1.5, 2 * h1), wp(0, 1.5, 2 * h1), wp(0, 3.0, 2 * h1), wp(10, 3.0, 2 * h1),
-                   wp(10, 1.5, 2 * h1), wp(10 + run, 1.5, h1), wp(10 + run, 0, h1), wp(10, 0),
+    r.waypoints = {wp(0, 0),
+                   wp(10, 0),
+                   wp(10 + run, 0, h1),
+                   wp(10 + run, 1.5, h1),
+                   wp(10, 1.5, 2 * h1),
+                   wp(0, 1.5, 2 * h1),
+                   wp(0, 3.0, 2 * h1),
+                   wp(10, 3.0, 2 * h1),
+                   wp(10, 1.5, 2 * h1),
+                   wp(10 + run, 1.5, h1),
+                   wp(10 + run, 0, h1),
+                   wp(10, 0),
                    wp(0, 0)};
     r.floor_height_m = 2 * h1;
     r.walls.push_back({0, {{-1, -1}, {10 + run + 1, -1}, {10 + run + 1, 2.5}, {10, 2.5}}});
     r.walls.push_back({0, {{-1, -1}, {-1, 1}, {10, 1}}});
-    r.walls.push_back({1, {{-1, 0.5}, {-1, 4}, {11, 4}, {11, 2.5}, {10 + run + 1, 2.5}, {10 + run + 1, -1}, {10, -1}, {10, 0.5}, {-1, 0.5}}});
+    r.walls.push_back({1,
+                       {{-1, 0.5},
+                        {-1, 4},
+                        {11, 4},
+                        {11, 2.5},
+                        {10 + run + 1, 2.5},
+                        {10 + run + 1, -1},
+                        {10, -1},
+                        {10, 0.5},
+                        {-1, 0.5}}});
     r.walls.push_back(rect(1, 1, 2.0, 9, 2.5));
     finish(r);
     return r;
@@ -67,8 +87,9 @@ Route stairs() {
 Route figure_eight() {
     Route r;
     r.name = "figure_eight";
-    r.description = "Two laps of a figure eight in an open hall: two 6 m-radius circles (24-gons) touching at the "
-                    "start, left loop counter-clockwise, right loop clockwise; a steel pillar disturbs the compass";
+    r.description =
+        "Two laps of a figure eight in an open hall: two 6 m-radius circles (24-gons) touching at the "
+        "start, left loop counter-clockwise, right loop clockwise; a steel pillar disturbs the compass";
     const int n = 24;
     const double R = 6.0;
     r.waypoints.push_back(wp(0, 0));
@@ -94,16 +115,36 @@ Route figure_eight() {
 Route building_tour() {
     Route r;
     r.name = "building_tour";
-    r.description = "Long tour of a two-storey office building: the 60 m x 30 m ring corridor of the ground floor, "
-                    "two flights up, the same ring on the first floor with a stop at a door, two flights down, "
-                    "back to the start; magnetic disturbances at the lift shaft and radiators";
+    r.description =
+        "Long tour of a two-storey office building: the 60 m x 30 m ring corridor of the ground floor, "
+        "two flights up, the same ring on the first floor with a stop at a door, two flights down, "
+        "back to the start; magnetic disturbances at the lift shaft and radiators";
     const double h1 = 10 * r.stair_rise_m, run = 10 * r.stair_run_m, H = 2 * h1;
     r.floor_height_m = H;
-    r.waypoints = {wp(0, 0),       wp(60, 0),      wp(60, 30),          wp(0, 30, 0, false, 3.0), wp(0, 0),
-                   wp(10, 0),      wp(10, -1.5),   wp(10 + run, -1.5, h1), wp(10 + run, -3.0, h1), wp(10, -3.0, H),
-                   wp(8, -3.0, H), wp(8, 0, H),    wp(60, 0, H),        wp(60, 30, H, false, 5.0), wp(0, 30, H),
-                   wp(0, 0, H),    wp(8, 0, H),    wp(8, -3.0, H),      wp(10, -3.0, H),
-                   wp(10 + run, -3.0, h1), wp(10 + run, -1.5, h1), wp(10, -1.5), wp(10, 0), wp(0, 0)};
+    r.waypoints = {wp(0, 0),
+                   wp(60, 0),
+                   wp(60, 30),
+                   wp(0, 30, 0, false, 3.0),
+                   wp(0, 0),
+                   wp(10, 0),
+                   wp(10, -1.5),
+                   wp(10 + run, -1.5, h1),
+                   wp(10 + run, -3.0, h1),
+                   wp(10, -3.0, H),
+                   wp(8, -3.0, H),
+                   wp(8, 0, H),
+                   wp(60, 0, H),
+                   wp(60, 30, H, false, 5.0),
+                   wp(0, 30, H),
+                   wp(0, 0, H),
+                   wp(8, 0, H),
+                   wp(8, -3.0, H),
+                   wp(10, -3.0, H),
+                   wp(10 + run, -3.0, h1),
+                   wp(10 + run, -1.5, h1),
+                   wp(10, -1.5),
+                   wp(10, 0),
+                   wp(0, 0)};
     for (int f = 0; f < 2; ++f) ring_walls(r, f, 0, 0, 60, 30, 2.5);
     r.mag_disturbances.push_back({{30.0, 0.0, 1.0}, 2.5, {-20.0, 12.0, -10.0}});
     r.mag_disturbances.push_back({{60.0, 15.0, 0.5}, 1.5, {10.0, 10.0, 5.0}});
@@ -115,10 +156,12 @@ Route building_tour() {
 Route outdoor_indoor() {
     Route r;
     r.name = "outdoor_indoor";
-    r.description = "Outdoors 50 m to a building (GNSS), 80 m through its corridors (no GNSS), out and 70 m back "
-                    "outdoors to the start";
+    r.description =
+        "Outdoors 50 m to a building (GNSS), 80 m through its corridors (no GNSS), out and 70 m back "
+        "outdoors to the start";
     r.start_still_s = 20.0;
-    r.waypoints = {wp(0, 0), wp(50, 0, 0, true), wp(80, 0), wp(80, 20), wp(50, 20), wp(0, 20, 0, true), wp(0, 0, 0, true)};
+    r.waypoints = {wp(0, 0),   wp(50, 0, 0, true), wp(80, 0),        wp(80, 20),
+                   wp(50, 20), wp(0, 20, 0, true), wp(0, 0, 0, true)};
     // Building from x = 50 to 82: a ring corridor with doors at (50, 0) and (50, 20).
     r.walls.push_back({0, {{50, -1.5}, {82, -1.5}, {82, 21.5}, {50, 21.5}}});
     r.walls.push_back(rect(0, 50, 1.5, 78, 18.5));

@@ -73,8 +73,8 @@ KinState FootKinematics::at(double t_s) {
         pitch.df = shape_.stairs_pitch_rad * toe.df;
     }
     s.yaw_enu_rad = a.yaw_enu_rad + dyaw * h.f;
-    euler_zyx(s.yaw_enu_rad, pitch.f, shape_.roll_rad * arc.f, dyaw * h.df, pitch.df, shape_.roll_rad * arc.df,
-              s.R_enu_body, s.w_body_radps);
+    euler_zyx(s.yaw_enu_rad, pitch.f, shape_.roll_rad * arc.f, dyaw * h.df, pitch.df,
+              shape_.roll_rad * arc.df, s.R_enu_body, s.w_body_radps);
     return s;
 }
 

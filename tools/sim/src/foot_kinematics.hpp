@@ -8,11 +8,11 @@
 namespace pednav::sim::detail {
 
 struct FootShape {
-    double toe_off_pitch_rad = 55.0 * M_PI / 180.0;   // peak toes-down pitch (heel-off, toe-off)
-    double heel_strike_pitch_rad = 25.0 * M_PI / 180.0; // peak toes-up pitch before landing, level floors
-    double stairs_pitch_rad = 25.0 * M_PI / 180.0;    // toes-down pitch on stairs (no heel strike)
-    double roll_rad = 3.0 * M_PI / 180.0;             // eversion during swing
-    double clearance_m = 0.12;                        // swing height above the straight line
+    double toe_off_pitch_rad = 55.0 * M_PI / 180.0;      // peak toes-down pitch (heel-off, toe-off)
+    double heel_strike_pitch_rad = 25.0 * M_PI / 180.0;  // peak toes-up pitch before landing, level floors
+    double stairs_pitch_rad = 25.0 * M_PI / 180.0;       // toes-down pitch on stairs (no heel strike)
+    double roll_rad = 3.0 * M_PI / 180.0;                // eversion during swing
+    double clearance_m = 0.12;                           // swing height above the straight line
     double stairs_clearance_m = 0.08;
 };
 

@@ -66,7 +66,8 @@ GaitPlan plan_gait(const Route& route) {
             plan.prints.push_back({p, yaw, static_cast<int>(i) - 1, kind});
             const int to = from + 1;
             // A stair stride over one riser instead of two takes half the time.
-            const double this_stride_s = wp.stairs ? stride_s * 0.5 * std::lround((f - f_prev) * risers) : stride_s;
+            const double this_stride_s =
+                wp.stairs ? stride_s * 0.5 * std::lround((f - f_prev) * risers) : stride_s;
             f_prev = f;
             const double swing_s = (1.0 - route.stance_fraction) * this_stride_s;
             double stance_s = route.stance_fraction * this_stride_s;

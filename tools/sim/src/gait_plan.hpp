@@ -28,10 +28,10 @@ struct FootPhase {
 
 struct GaitPlan {
     std::vector<Footprint> prints;
-    std::vector<FootPhase> phases;   // contiguous, from t = 0 to end_s
-    std::vector<double> landing_s;   // start of the stance after each swing
+    std::vector<FootPhase> phases;  // contiguous, from t = 0 to end_s
+    std::vector<double> landing_s;  // start of the stance after each swing
     double end_s = 0.0;
-    double distance_m = 0.0;         // horizontal, footprint to footprint
+    double distance_m = 0.0;  // horizontal, footprint to footprint
 };
 
 GaitPlan plan_gait(const Route& route);

@@ -6,8 +6,8 @@ namespace pednav::sim {
 
 namespace {
 
-constexpr double kA = 6378137.0;               // WGS-84 semi-major axis
-constexpr double kE2 = 6.69437999014e-3;       // first eccentricity squared
+constexpr double kA = 6378137.0;          // WGS-84 semi-major axis
+constexpr double kE2 = 6.69437999014e-3;  // first eccentricity squared
 constexpr double kDeg = M_PI / 180.0;
 
 // Meridian (north) and prime-vertical (east) radii of curvature.
@@ -20,7 +20,8 @@ void radii(double lat_rad, double& r_north, double& r_east) {
 
 }  // namespace
 
-void enu_to_llh(const GeoOrigin& o, const double enu_m[3], double& lat_deg, double& lon_deg, double& height_m) {
+void enu_to_llh(const GeoOrigin& o, const double enu_m[3], double& lat_deg, double& lon_deg,
+                double& height_m) {
     double rn = 0.0, re = 0.0;
     radii(o.lat_deg * kDeg, rn, re);
     lat_deg = o.lat_deg + enu_m[1] / (rn + o.height_m) / kDeg;

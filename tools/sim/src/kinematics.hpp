@@ -12,9 +12,9 @@ struct KinState {
     Eigen::Vector3d a_enu_mps2 = Eigen::Vector3d::Zero();
     Eigen::Matrix3d R_enu_body = Eigen::Matrix3d::Identity();
     Eigen::Vector3d w_body_radps = Eigen::Vector3d::Zero();  // angular rate in body axes
-    double yaw_enu_rad = 0.0;  // walking direction, counter-clockwise from east
+    double yaw_enu_rad = 0.0;                                // walking direction, counter-clockwise from east
     int stance = 1;
-    int segment = 0;           // route segment (index of its start waypoint)
+    int segment = 0;  // route segment (index of its start waypoint)
 };
 
 // R = Rz(yaw) Ry(pitch) Rx(roll) and the body angular rate from the angle rates.
@@ -24,7 +24,8 @@ inline void euler_zyx(double yaw, double pitch, double roll, double dyaw, double
     const Eigen::Matrix3d Ry = Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()).toRotationMatrix();
     const Eigen::Matrix3d Rx = Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()).toRotationMatrix();
     R_enu_body = Rz * Ry * Rx;
-    w_body = Rx.transpose() * (Ry.transpose() * Eigen::Vector3d(0.0, 0.0, dyaw) + Eigen::Vector3d(0.0, dpitch, 0.0)) +
+    w_body = Rx.transpose() *
+                 (Ry.transpose() * Eigen::Vector3d(0.0, 0.0, dyaw) + Eigen::Vector3d(0.0, dpitch, 0.0)) +
              Eigen::Vector3d(droll, 0.0, 0.0);
 }
 

@@ -15,8 +15,7 @@ inline Profile transition(double u) {
     if (u <= 0.0) return {0.0, 0.0, 0.0};
     if (u >= 1.0) return {1.0, 0.0, 0.0};
     const double u2 = u * u, u3 = u2 * u, u4 = u3 * u, u5 = u4 * u, u6 = u5 * u, u7 = u6 * u;
-    return {35.0 * u4 - 84.0 * u5 + 70.0 * u6 - 20.0 * u7,
-            140.0 * u3 - 420.0 * u4 + 420.0 * u5 - 140.0 * u6,
+    return {35.0 * u4 - 84.0 * u5 + 70.0 * u6 - 20.0 * u7, 140.0 * u3 - 420.0 * u4 + 420.0 * u5 - 140.0 * u6,
             420.0 * u2 - 1680.0 * u3 + 2100.0 * u4 - 840.0 * u5};
 }
 

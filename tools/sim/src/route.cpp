@@ -41,11 +41,13 @@ void check_keys(const json& j, const std::string& where, const std::set<std::str
 }  // namespace
 
 Route parse_route(const json& j) {
-    check_keys(j, "", {"format", "name", "description", "waypoints", "speed_mps", "step_length_m", "stance_fraction",
-                       "stair_rise_m", "stair_run_m", "stairs_step_period_s", "floor_height_m", "start_still_s",
-                       "end_still_s", "origin", "mag_disturbances", "walls"});
+    check_keys(j, "",
+               {"format", "name", "description", "waypoints", "speed_mps", "step_length_m", "stance_fraction",
+                "stair_rise_m", "stair_run_m", "stairs_step_period_s", "floor_height_m", "start_still_s",
+                "end_still_s", "origin", "mag_disturbances", "walls"});
     Route r;
-    if (j.contains("format") && j["format"] != "pednav-route/1") fail("/format", "must be \"pednav-route/1\"");
+    if (j.contains("format") && j["format"] != "pednav-route/1")
+        fail("/format", "must be \"pednav-route/1\"");
     if (j.contains("name")) {
         if (!j["name"].is_string()) fail("/name", "must be a string");
         r.name = j["name"].get<std::string>();
@@ -71,7 +73,8 @@ Route parse_route(const json& j) {
         check_keys(o, "/origin", {"lat_deg", "lon_deg", "height_m"});
         if (o.contains("lat_deg")) r.origin_lat_deg = number(o["lat_deg"], "/origin/lat_deg", -85.0, 85.0);
         if (o.contains("lon_deg")) r.origin_lon_deg = number(o["lon_deg"], "/origin/lon_deg", -180.0, 180.0);
-        if (o.contains("height_m")) r.origin_height_m = number(o["height_m"], "/origin/height_m", -500.0, 9000.0);
+        if (o.contains("height_m"))
+            r.origin_height_m = number(o["height_m"], "/origin/height_m", -500.0, 9000.0);
     }
     if (!j.contains("waypoints")) fail("/waypoints", "missing");
     const json& wps = j["waypoints"];
@@ -86,13 +89,16 @@ Route parse_route(const json& j) {
             check_keys(wps[i], w, {"enu_m", "stairs", "outdoor", "still_s"});
             if (!wps[i].contains("enu_m")) fail(w + "/enu_m", "missing");
             vec(wps[i]["enu_m"], w + "/enu_m", 3, wp.enu_m);
-            if (wps[i].contains("stairs")) wp.stairs = boolean(wps[i]["stairs"], w + "/stairs"), stairs_given = true;
+            if (wps[i].contains("stairs"))
+                wp.stairs = boolean(wps[i]["stairs"], w + "/stairs"), stairs_given = true;
             if (wps[i].contains("outdoor")) wp.outdoor = boolean(wps[i]["outdoor"], w + "/outdoor");
-            if (wps[i].contains("still_s")) wp.still_s = number(wps[i]["still_s"], w + "/still_s", 0.0, 3600.0);
+            if (wps[i].contains("still_s"))
+                wp.still_s = number(wps[i]["still_s"], w + "/still_s", 0.0, 3600.0);
         }
         if (i > 0 && !stairs_given) wp.stairs = std::fabs(wp.enu_m[2] - r.waypoints.back().enu_m[2]) > 1e-6;
         if (i > 0 && !wp.stairs && std::fabs(wp.enu_m[2] - r.waypoints.back().enu_m[2]) > 1e-6) {
-            const double run = std::hypot(wp.enu_m[0] - r.waypoints.back().enu_m[0], wp.enu_m[1] - r.waypoints.back().enu_m[1]);
+            const double run = std::hypot(wp.enu_m[0] - r.waypoints.back().enu_m[0],
+                                          wp.enu_m[1] - r.waypoints.back().enu_m[1]);
             if (std::fabs(wp.enu_m[2] - r.waypoints.back().enu_m[2]) > 0.15 * run)
                 fail(w + "/stairs", "a ramp steeper than 15 % must be stairs");
         }
@@ -109,7 +115,8 @@ Route parse_route(const json& j) {
             if (!md[i].contains("field_ut")) fail(w + "/field_ut", "missing");
             vec(md[i]["center_enu_m"], w + "/center_enu_m", 3, d.center_enu_m);
             vec(md[i]["field_ut"], w + "/field_ut", 3, d.field_ut);
-            if (md[i].contains("radius_m")) d.radius_m = number(md[i]["radius_m"], w + "/radius_m", 0.05, 100.0);
+            if (md[i].contains("radius_m"))
+                d.radius_m = number(md[i]["radius_m"], w + "/radius_m", 0.05, 100.0);
             r.mag_disturbances.push_back(d);
         }
     }
@@ -124,7 +131,8 @@ Route parse_route(const json& j) {
                 if (!ws[i]["floor"].is_number_integer()) fail(w + "/floor", "must be an integer");
                 wall.floor = ws[i]["floor"].get<int>();
             }
-            if (!ws[i].contains("points_enu_m") || !ws[i]["points_enu_m"].is_array() || ws[i]["points_enu_m"].size() < 2)
+            if (!ws[i].contains("points_enu_m") || !ws[i]["points_enu_m"].is_array() ||
+                ws[i]["points_enu_m"].size() < 2)
                 fail(w + "/points_enu_m", "must be an array of at least two [x, y] points");
             for (size_t k = 0; k < ws[i]["points_enu_m"].size(); ++k) {
                 double xy[2];
@@ -151,7 +159,8 @@ json route_to_json(const Route& r) {
     j["floor_height_m"] = r.floor_height_m;
     j["start_still_s"] = r.start_still_s;
     j["end_still_s"] = r.end_still_s;
-    j["origin"] = {{"lat_deg", r.origin_lat_deg}, {"lon_deg", r.origin_lon_deg}, {"height_m", r.origin_height_m}};
+    j["origin"] = {
+        {"lat_deg", r.origin_lat_deg}, {"lon_deg", r.origin_lon_deg}, {"height_m", r.origin_height_m}};
     j["waypoints"] = json::array();
     for (const Waypoint& w : r.waypoints)
         j["waypoints"].push_back({{"enu_m", {w.enu_m[0], w.enu_m[1], w.enu_m[2]}},
@@ -160,9 +169,10 @@ json route_to_json(const Route& r) {
                                   {"still_s", w.still_s}});
     j["mag_disturbances"] = json::array();
     for (const MagDisturbance& d : r.mag_disturbances)
-        j["mag_disturbances"].push_back({{"center_enu_m", {d.center_enu_m[0], d.center_enu_m[1], d.center_enu_m[2]}},
-                                         {"radius_m", d.radius_m},
-                                         {"field_ut", {d.field_ut[0], d.field_ut[1], d.field_ut[2]}}});
+        j["mag_disturbances"].push_back(
+            {{"center_enu_m", {d.center_enu_m[0], d.center_enu_m[1], d.center_enu_m[2]}},
+             {"radius_m", d.radius_m},
+             {"field_ut", {d.field_ut[0], d.field_ut[1], d.field_ut[2]}}});
     j["walls"] = json::array();
     for (const Wall& w : r.walls) {
         json pts = json::array();

@@ -37,8 +37,8 @@ struct TriaxErrors {
     Eigen::Vector3d bias_rw = Eigen::Vector3d::Zero();
     double noise_sigma = 0.0, rw_sigma = 0.0, range = INFINITY;
 
-    TriaxErrors(bool on, Rng& rng, double scale_sigma, double bias_sigma, double rw_density, double noise_density,
-                double range_, double rate_hz) {
+    TriaxErrors(bool on, Rng& rng, double scale_sigma, double bias_sigma, double rw_density,
+                double noise_density, double range_, double rate_hz) {
         if (!on) return;
         for (int i = 0; i < 3; ++i) scale[i] = scale_sigma * rng.normal();
         for (int i = 0; i < 3; ++i) bias[i] = bias_sigma * rng.normal();
@@ -47,7 +47,8 @@ struct TriaxErrors {
         range = range_;
     }
     Eigen::Vector3d apply(const Eigen::Vector3d& truth, Rng& rng) {
-        if (noise_sigma == 0.0 && rw_sigma == 0.0 && std::isinf(range) && scale.isZero() && bias.isZero()) return truth;
+        if (noise_sigma == 0.0 && rw_sigma == 0.0 && std::isinf(range) && scale.isZero() && bias.isZero())
+            return truth;
         Eigen::Vector3d m;
         for (int i = 0; i < 3; ++i) {
             bias_rw[i] += rw_sigma * rng.normal();
@@ -67,7 +68,8 @@ Eigen::Vector3d earth_field_enu(const SimOptions& o) {
 Eigen::Vector3d disturbance_enu(const Route& route, const Eigen::Vector3d& p) {
     Eigen::Vector3d b = Eigen::Vector3d::Zero();
     for (const MagDisturbance& d : route.mag_disturbances) {
-        const double r = (p - Eigen::Vector3d(d.center_enu_m[0], d.center_enu_m[1], d.center_enu_m[2])).norm();
+        const double r =
+            (p - Eigen::Vector3d(d.center_enu_m[0], d.center_enu_m[1], d.center_enu_m[2])).norm();
         if (r >= d.radius_m) continue;
         const double u = r / d.radius_m;
         const double w = (1.0 - u * u) * (1.0 - u * u);
@@ -97,8 +99,8 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
             .toRotationMatrix();
     const bool err = options.sensor_errors;
     const ImuErrorModel& im = options.imu;
-    Rng rng_setup(options.seed, 0), rng_acc(options.seed, 1), rng_gyr(options.seed, 2), rng_mag(options.seed, 3),
-        rng_baro(options.seed, 4), rng_gnss(options.seed, 5);
+    Rng rng_setup(options.seed, 0), rng_acc(options.seed, 1), rng_gyr(options.seed, 2),
+        rng_mag(options.seed, 3), rng_baro(options.seed, 4), rng_gnss(options.seed, 5);
     TriaxErrors acc_err(err, rng_setup, im.accel_scale, im.accel_bias_mps2, im.accel_bias_rw_mps2_per_rts,
                         im.accel_noise_mps2_per_rthz, im.accel_range_mps2, options.rate_hz);
     TriaxErrors gyr_err(err, rng_setup, im.gyro_scale, im.gyro_bias_radps, im.gyro_bias_rw_radps_per_rts,
@@ -122,12 +124,15 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
     double next_fix_s = 0.0;
     Eigen::Vector3d gm = Eigen::Vector3d::Zero();
     const double gm_tau_s = 60.0;
-    if (err) gm = Eigen::Vector3d(options.gnss_sigma_h_m * rng_gnss.normal(), options.gnss_sigma_h_m * rng_gnss.normal(),
-                                  options.gnss_sigma_v_m * rng_gnss.normal());
+    if (err)
+        gm = Eigen::Vector3d(options.gnss_sigma_h_m * rng_gnss.normal(),
+                             options.gnss_sigma_h_m * rng_gnss.normal(),
+                             options.gnss_sigma_v_m * rng_gnss.normal());
     double last_gm_s = 0.0;
 
     for (size_t k = 0; k < n; ++k) {
-        const int64_t t_ns = static_cast<int64_t>(std::llround(static_cast<double>(k) * 1e9 / options.rate_hz));
+        const int64_t t_ns =
+            static_cast<int64_t>(std::llround(static_cast<double>(k) * 1e9 / options.rate_hz));
         const double t = static_cast<double>(t_ns) * 1e-9;
         const KinState s = traj->at(t);
         const Eigen::Matrix3d R_enu_sensor = s.R_enu_body * R_body_sensor;
@@ -156,7 +161,8 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
             ts.vel_enu_mps[i] = s.v_enu_mps[i];
         }
         ts.stance = s.stance;
-        ts.floor = static_cast<int>(std::lround((s.p_enu_m.z() - traj->height_above_floor_m()) / route.floor_height_m));
+        ts.floor = static_cast<int>(
+            std::lround((s.p_enu_m.z() - traj->height_above_floor_m()) / route.floor_height_m));
         double heading = 90.0 - s.yaw_enu_rad / kDeg;
         heading = std::fmod(heading, 360.0);
         if (heading < 0.0) heading += 360.0;
@@ -167,7 +173,9 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
             auto m = make_record<pn_mag_t>(PN_REC_MAG, t_ns);
             const Eigen::Vector3d b_enu = b_earth + disturbance_enu(route, s.p_enu_m);
             Eigen::Vector3d b = R_enu_sensor.transpose() * b_enu;
-            if (err) b += mag_bias + options.mag_noise_ut * Eigen::Vector3d(rng_mag.normal(), rng_mag.normal(), rng_mag.normal());
+            if (err)
+                b += mag_bias + options.mag_noise_ut *
+                                    Eigen::Vector3d(rng_mag.normal(), rng_mag.normal(), rng_mag.normal());
             for (int i = 0; i < 3; ++i) m.mag_ut[i] = b[i];
             out.mag.push_back(m);
         }
@@ -194,15 +202,19 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
             if (outdoor) {
                 auto g = make_record<pn_gnss_t>(PN_REC_GNSS, t_ns);
                 Eigen::Vector3d p = s.p_enu_m;
-                if (err) p += gm + options.gnss_white_h_m * Eigen::Vector3d(rng_gnss.normal(), rng_gnss.normal(), 0.0);
+                if (err)
+                    p += gm +
+                         options.gnss_white_h_m * Eigen::Vector3d(rng_gnss.normal(), rng_gnss.normal(), 0.0);
                 const double pe[3] = {p.x(), p.y(), p.z()};
                 enu_to_llh(origin, pe, g.lat_deg, g.lon_deg, g.height_m);
                 g.h_accuracy_m = err ? std::sqrt(2.0 * (options.gnss_sigma_h_m * options.gnss_sigma_h_m +
                                                         options.gnss_white_h_m * options.gnss_white_h_m))
                                      : 0.01;
                 g.v_accuracy_m = err ? options.gnss_sigma_v_m : 0.01;
-                // Receiver velocity: the walking velocity over the last period (the body's, not the swinging foot's).
-                const size_t back = std::min(k, static_cast<size_t>(std::llround(gnss_period_s * options.rate_hz)));
+                // Receiver velocity: the walking velocity over the last period (the body's, not the swinging
+                // foot's).
+                const size_t back =
+                    std::min(k, static_cast<size_t>(std::llround(gnss_period_s * options.rate_hz)));
                 const TruthSample& old = out.truth[k - back];
                 const double dt = t - old.t_s;
                 for (int i = 0; i < 3; ++i) {

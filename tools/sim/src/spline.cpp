@@ -5,7 +5,8 @@
 
 namespace pednav::sim::detail {
 
-ClampedSpline::ClampedSpline(std::vector<double> t, std::vector<double> y) : t_(std::move(t)), y_(std::move(y)) {
+ClampedSpline::ClampedSpline(std::vector<double> t, std::vector<double> y)
+    : t_(std::move(t)), y_(std::move(y)) {
     const size_t n = t_.size();
     if (n < 2 || y_.size() != n) throw std::runtime_error("spline: at least two knots");
     // Tridiagonal system for the second derivatives, end slopes zero.
@@ -37,8 +38,10 @@ Profile ClampedSpline::at(double t) const {
     const size_t i = static_cast<size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin()) - 1;
     const double h = t_[i + 1] - t_[i];
     const double A = (t_[i + 1] - t) / h, B = (t - t_[i]) / h;
-    const double f = A * y_[i] + B * y_[i + 1] + ((A * A * A - A) * m_[i] + (B * B * B - B) * m_[i + 1]) * h * h / 6.0;
-    const double df = (y_[i + 1] - y_[i]) / h + (-(3.0 * A * A - 1.0) * m_[i] + (3.0 * B * B - 1.0) * m_[i + 1]) * h / 6.0;
+    const double f =
+        A * y_[i] + B * y_[i + 1] + ((A * A * A - A) * m_[i] + (B * B * B - B) * m_[i + 1]) * h * h / 6.0;
+    const double df =
+        (y_[i + 1] - y_[i]) / h + (-(3.0 * A * A - 1.0) * m_[i] + (3.0 * B * B - 1.0) * m_[i + 1]) * h / 6.0;
     const double ddf = A * m_[i] + B * m_[i + 1];
     return {f, df, ddf};
 }

@@ -23,7 +23,8 @@ private:
 
 class BodyTrajectory : public Trajectory {
 public:
-    BodyTrajectory(const GaitPlan& plan, const Route& route, const BodyShape& shape) : kin_(plan, route, shape) {}
+    BodyTrajectory(const GaitPlan& plan, const Route& route, const BodyShape& shape)
+        : kin_(plan, route, shape) {}
     KinState at(double t_s) override { return kin_.at(t_s); }
     double height_above_floor_m() const override { return kin_.shape().height_m; }
     std::vector<double> step_times_s() const override { return kin_.step_times_s(); }
@@ -34,7 +35,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan, const Route& route) {
+std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan,
+                                            const Route& route) {
     if (mount == "foot") return std::make_unique<FootTrajectory>(plan);
     if (mount == "chest") return std::make_unique<BodyTrajectory>(plan, route, BodyShape::chest());
     if (mount == "waist") return std::make_unique<BodyTrajectory>(plan, route, BodyShape::waist());

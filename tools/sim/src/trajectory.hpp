@@ -22,6 +22,7 @@ public:
 };
 
 // "foot", "chest" or "waist"; throws std::runtime_error otherwise.
-std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan, const Route& route);
+std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan,
+                                            const Route& route);
 
 }  // namespace pednav::sim::detail

@@ -1,10 +1,10 @@
+#include <sys/stat.h>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
-#include <sys/stat.h>
 
 #include <pednav_sim/geo.hpp>
 #include <pednav_sim/simulate.hpp>
@@ -47,15 +47,17 @@ void write_outputs(const SimOutput& out, const Route& route, const std::string& 
     const bool baro = out.baro.size() == out.imu.size() && !out.baro.empty();
 
     std::FILE* f = open_or_throw(out_dir + "/input.csv");
-    std::fprintf(f, "# pednav simulated walk: route %s, mount %s, %.6g Hz\n", route.name.c_str(), out.mount.c_str(),
-                 out.rate_hz);
+    std::fprintf(f, "# pednav simulated walk: route %s, mount %s, %.6g Hz\n", route.name.c_str(),
+                 out.mount.c_str(), out.rate_hz);
     std::fprintf(f, "t,ax,ay,az,gx,gy,gz%s%s\n", mag ? ",mx,my,mz" : "", baro ? ",p" : "");
     for (size_t k = 0; k < out.imu.size(); ++k) {
         const pn_imu_t& m = out.imu[k];
         std::fprintf(f, "%.9f,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", static_cast<double>(m.header.t_ns) * 1e-9,
                      m.accel_mps2[0], m.accel_mps2[1], m.accel_mps2[2], m.gyro_radps[0], m.gyro_radps[1],
                      m.gyro_radps[2]);
-        if (mag) std::fprintf(f, ",%.8g,%.8g,%.8g", out.mag[k].mag_ut[0], out.mag[k].mag_ut[1], out.mag[k].mag_ut[2]);
+        if (mag)
+            std::fprintf(f, ",%.8g,%.8g,%.8g", out.mag[k].mag_ut[0], out.mag[k].mag_ut[1],
+                         out.mag[k].mag_ut[2]);
         if (baro) std::fprintf(f, ",%.10g", out.baro[k].pressure_pa);
         std::fputc('\n', f);
     }
@@ -63,8 +65,9 @@ void write_outputs(const SimOutput& out, const Route& route, const std::string& 
 
     // Truth: one row per IMU sample; step = 1 on the sample at or just after each step event.
     f = open_or_throw(out_dir + "/truth.csv");
-    std::fprintf(f, "# pednav simulated truth: sensor position (ENU m), attitude q_enu_from_body (sensor axes), "
-                    "velocity, stance, step event, floor, walking heading (deg clockwise from north)\n");
+    std::fprintf(f,
+                 "# pednav simulated truth: sensor position (ENU m), attitude q_enu_from_body (sensor axes), "
+                 "velocity, stance, step event, floor, walking heading (deg clockwise from north)\n");
     std::fprintf(f, "t,x,y,z,qw,qx,qy,qz,vx,vy,vz,stance,step,floor,heading_deg\n");
     size_t next_step = 0;
     for (const TruthSample& s : out.truth) {
@@ -74,18 +77,18 @@ void write_outputs(const SimOutput& out, const Route& route, const std::string& 
             ++next_step;
         }
         std::fprintf(f, "%.9f,%.6f,%.6f,%.6f,%.9f,%.9f,%.9f,%.9f,%.6f,%.6f,%.6f,%d,%d,%d,%.4f\n", s.t_s,
-                     s.pos_enu_m[0], s.pos_enu_m[1], s.pos_enu_m[2], s.q_enu_from_body[0], s.q_enu_from_body[1],
-                     s.q_enu_from_body[2], s.q_enu_from_body[3], s.vel_enu_mps[0], s.vel_enu_mps[1],
-                     s.vel_enu_mps[2], s.stance, step, s.floor, s.heading_deg);
+                     s.pos_enu_m[0], s.pos_enu_m[1], s.pos_enu_m[2], s.q_enu_from_body[0],
+                     s.q_enu_from_body[1], s.q_enu_from_body[2], s.q_enu_from_body[3], s.vel_enu_mps[0],
+                     s.vel_enu_mps[1], s.vel_enu_mps[2], s.stance, step, s.floor, s.heading_deg);
     }
     std::fclose(f);
 
     f = open_or_throw(out_dir + "/gnss.csv");
     std::fprintf(f, "t,lat_deg,lon_deg,height_m,h_accuracy_m,v_accuracy_m,ve,vn,vu\n");
     for (const pn_gnss_t& g : out.gnss)
-        std::fprintf(f, "%.9f,%.9f,%.9f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n", static_cast<double>(g.header.t_ns) * 1e-9,
-                     g.lat_deg, g.lon_deg, g.height_m, g.h_accuracy_m, g.v_accuracy_m, g.vel_enu_mps[0],
-                     g.vel_enu_mps[1], g.vel_enu_mps[2]);
+        std::fprintf(f, "%.9f,%.9f,%.9f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
+                     static_cast<double>(g.header.t_ns) * 1e-9, g.lat_deg, g.lon_deg, g.height_m,
+                     g.h_accuracy_m, g.v_accuracy_m, g.vel_enu_mps[0], g.vel_enu_mps[1], g.vel_enu_mps[2]);
     std::fclose(f);
 
     // Building map: walls and the route as GeoJSON LineStrings (WGS-84 lon, lat).

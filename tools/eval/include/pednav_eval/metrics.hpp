@@ -3,8 +3,8 @@
 // table or JSON.
 #pragma once
 
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -43,7 +43,8 @@ enum class Alignment {
     none,           // compare coordinates as they are
     start_point,    // translate the track so that it starts on the truth's start
     first_segment,  // start point, then rotate about it so the first segment's heading agrees
-    fitted          // start point, then one 2-D rotation fitted on the first N checkpoints (Procrustes, rotation only)
+    fitted  // start point, then one 2-D rotation fitted on the first N checkpoints (Procrustes, rotation
+            // only)
 };
 Alignment parse_alignment(const std::string& name);  // "none", "start", "first-segment", "fitted"; throws
 const char* alignment_name(Alignment a);
@@ -51,22 +52,23 @@ const char* alignment_name(Alignment a);
 // Rotation angle (rad, counter-clockwise) that best maps points a onto points b
 // in least squares, both already relative to their start: the 2-D orthogonal
 // Procrustes solution restricted to rotations.
-double procrustes_rotation_rad(const std::vector<std::array<double, 2>>& a, const std::vector<std::array<double, 2>>& b);
+double procrustes_rotation_rad(const std::vector<std::array<double, 2>>& a,
+                               const std::vector<std::array<double, 2>>& b);
 
 struct EvalOptions {
     Alignment alignment = Alignment::none;
-    size_t fit_points = 5;           // fitted: checkpoints used (after the start), 0 = all
-    double first_segment_m = 3.0;    // first_segment: the first checkpoint at least this far from the start
+    size_t fit_points = 5;         // fitted: checkpoints used (after the start), 0 = all
+    double first_segment_m = 3.0;  // first_segment: the first checkpoint at least this far from the start
     double sim_checkpoint_period_s = 0.1;  // (informational) spacing of simulated-truth checkpoints
 };
 
 // The transform applied to the track: p' = R(rotation) (p - from) + to.
 struct AlignmentResult {
     Alignment mode = Alignment::none;
-    double rotation_deg = 0.0;       // counter-clockwise
+    double rotation_deg = 0.0;  // counter-clockwise
     double from_m[2] = {0.0, 0.0};
     double to_m[2] = {0.0, 0.0};
-    double z_offset_m = 0.0;         // added to the track's height
+    double z_offset_m = 0.0;  // added to the track's height
 };
 AlignmentResult align(const Track& track, const Truth& truth, const EvalOptions& options);
 Track apply_alignment(const Track& track, const AlignmentResult& a);
@@ -76,15 +78,15 @@ struct Metrics {
     std::string truth_kind;
     AlignmentResult alignment;
     size_t checkpoints = 0;
-    AxisStats dx_m, dy_m;            // estimate - truth at the checkpoints
-    ErrorStats horizontal_m;         // |(dx, dy)|
-    double final_error_m = NAN;      // at the last checkpoint
-    double ipin_score_m = NAN;       // when floors are known on both sides, else horizontal p75
-    ErrorStats heading_error_deg;    // |angle difference| where the truth has a heading
+    AxisStats dx_m, dy_m;          // estimate - truth at the checkpoints
+    ErrorStats horizontal_m;       // |(dx, dy)|
+    double final_error_m = NAN;    // at the last checkpoint
+    double ipin_score_m = NAN;     // when floors are known on both sides, else horizontal p75
+    ErrorStats heading_error_deg;  // |angle difference| where the truth has a heading
     double height_error_mean_m = NAN, height_error_sd_m = NAN;  // estimate - truth where the truth has z
     double floor_correct_pct = NAN;
     double loop_closure_m = NAN, loop_closure_3d_m = NAN, loop_closure_pct = NAN;
-    double distance_m = NAN;         // track's horizontal path length
+    double distance_m = NAN;  // track's horizontal path length
     double truth_distance_m = NAN;
     int step_count = -1, truth_step_count = -1;
     std::vector<double> leg_lengths_m, leg_errors_pct;  // per known leg

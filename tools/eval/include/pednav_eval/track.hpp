@@ -19,8 +19,8 @@ struct TrackSample {
 };
 
 struct Track {
-    std::vector<TrackSample> samples;   // non-decreasing time
-    std::vector<double> step_times_s;   // step events, when known
+    std::vector<TrackSample> samples;  // non-decreasing time
+    std::vector<double> step_times_s;  // step events, when known
     bool has_steps = false;
 
     // Position at time t: linear interpolation, clamped to the track's ends.

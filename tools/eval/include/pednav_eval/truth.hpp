@@ -11,12 +11,12 @@
 namespace pednav::eval {
 
 enum class TruthKind {
-    simulated,    // pednav sim truth.csv: dense, exact
-    footprints,   // koroglu-foot-gcp: footprint position per stride, frame of the floor tiles
-    landmarks,    // humolire-phone keypoints + reference times, map frame
-    ipin_posi,    // IPIN competition POSI lines (WGS-84, floor)
-    loop,         // a closed loop: the walk ends where it started
-    step_events   // ipol-gait-waist-feet: footsteps and 10 m legs
+    simulated,   // pednav sim truth.csv: dense, exact
+    footprints,  // koroglu-foot-gcp: footprint position per stride, frame of the floor tiles
+    landmarks,   // humolire-phone keypoints + reference times, map frame
+    ipin_posi,   // IPIN competition POSI lines (WGS-84, floor)
+    loop,        // a closed loop: the walk ends where it started
+    step_events  // ipol-gait-waist-feet: footsteps and 10 m legs
 };
 const char* truth_kind_name(TruthKind kind);
 
@@ -25,7 +25,7 @@ struct TruthPoint {
     double x_m = 0.0, y_m = 0.0, z_m = NAN;  // z NaN when unknown
     int floor = 0;
     bool has_floor = false;
-    double heading_deg = NAN;                 // clockwise from north (of the truth frame's y axis); NaN when unknown
+    double heading_deg = NAN;  // clockwise from north (of the truth frame's y axis); NaN when unknown
 };
 
 // A stretch of the walk between two times whose straight-line length is known.
@@ -42,17 +42,17 @@ struct WallLine {
 struct Truth {
     TruthKind kind = TruthKind::simulated;
     std::string name;
-    std::vector<TruthPoint> points;       // checkpoints in time order
-    bool closed_loop = false;             // the walk ends where it started
+    std::vector<TruthPoint> points;               // checkpoints in time order
+    bool closed_loop = false;                     // the walk ends where it started
     double loop_start_s = NAN, loop_end_s = NAN;  // loop: NaN = the track's first / last sample
-    double loop_length_m = NAN;           // known distance walked around the loop (NaN: use the track's)
-    int step_count = -1;                  // expected steps (-1 unknown); footprints: strides
+    double loop_length_m = NAN;  // known distance walked around the loop (NaN: use the track's)
+    int step_count = -1;         // expected steps (-1 unknown); footprints: strides
     std::vector<double> step_times_s;
     std::vector<Leg> legs;
-    double start_x_m = NAN, start_y_m = NAN;     // known start point (landmarks), NaN if unknown
-    double start_heading_deg = NAN;              // known start heading, clockwise from the frame's y axis
-    std::vector<WallLine> walls;          // map walls as polylines, same frame
-    double distance_m = NAN;              // distance walked when known (simulated)
+    double start_x_m = NAN, start_y_m = NAN;  // known start point (landmarks), NaN if unknown
+    double start_heading_deg = NAN;           // known start heading, clockwise from the frame's y axis
+    std::vector<WallLine> walls;              // map walls as polylines, same frame
+    double distance_m = NAN;                  // distance walked when known (simulated)
 };
 
 }  // namespace pednav::eval

@@ -13,10 +13,10 @@ namespace pednav::plot {
 struct Series {
     std::string label;
     std::string color = "#1f77b4";
-    std::vector<Point> points;   // metres (map) or (time s, value) (time plot)
+    std::vector<Point> points;  // metres (map) or (time s, value) (time plot)
     double width_px = 1.5;
     bool dashed = false;
-    bool markers = false;        // a dot at every point (checkpoints, footprints)
+    bool markers = false;  // a dot at every point (checkpoints, footprints)
 };
 
 struct MapPanel {
@@ -34,7 +34,7 @@ struct TimePanel {
 struct WalkPlot {
     std::string title;
     MapPanel map;
-    TimePanel error;          // empty series: no time panel
+    TimePanel error;  // empty series: no time panel
     double width_px = 900.0;
 };
 

@@ -11,7 +11,8 @@ struct GeoOrigin {
     double height_m = 0.0;
 };
 
-void enu_to_llh(const GeoOrigin& origin, const double enu_m[3], double& lat_deg, double& lon_deg, double& height_m);
+void enu_to_llh(const GeoOrigin& origin, const double enu_m[3], double& lat_deg, double& lon_deg,
+                double& height_m);
 void llh_to_enu(const GeoOrigin& origin, double lat_deg, double lon_deg, double height_m, double enu_m[3]);
 
 // Pressure of the standard atmosphere at an altitude, and its inverse.

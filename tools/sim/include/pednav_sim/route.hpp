@@ -38,19 +38,19 @@ struct Wall {
 struct Route {
     std::string name;
     std::string description;
-    std::vector<Waypoint> waypoints;   // at least two
-    double speed_mps = 1.3;            // walking speed on level floors
-    double step_length_m = 0.7;        // one step (half a stride) on level floors
-    double stance_fraction = 0.28;     // share of a stride the foot is flat and still
-    double stair_rise_m = 0.17;        // per stair step
-    double stair_run_m = 0.28;         // per stair step (horizontal)
-    double stairs_step_period_s = 0.6; // one step on stairs (one stair per step)
-    double floor_height_m = 3.4;       // floor index = round(height / floor_height)
-    double start_still_s = 10.0;       // standing still before the first step (alignment)
-    double end_still_s = 5.0;          // standing still after the last step
-    double origin_lat_deg = 48.8566;   // WGS-84 position of the ENU origin
+    std::vector<Waypoint> waypoints;    // at least two
+    double speed_mps = 1.3;             // walking speed on level floors
+    double step_length_m = 0.7;         // one step (half a stride) on level floors
+    double stance_fraction = 0.28;      // share of a stride the foot is flat and still
+    double stair_rise_m = 0.17;         // per stair step
+    double stair_run_m = 0.28;          // per stair step (horizontal)
+    double stairs_step_period_s = 0.6;  // one step on stairs (one stair per step)
+    double floor_height_m = 3.4;        // floor index = round(height / floor_height)
+    double start_still_s = 10.0;        // standing still before the first step (alignment)
+    double end_still_s = 5.0;           // standing still after the last step
+    double origin_lat_deg = 48.8566;    // WGS-84 position of the ENU origin
     double origin_lon_deg = 2.3522;
-    double origin_height_m = 50.0;     // ellipsoidal height of the ENU origin
+    double origin_height_m = 50.0;  // ellipsoidal height of the ENU origin
     std::vector<MagDisturbance> mag_disturbances;
     std::vector<Wall> walls;
 };

@@ -32,27 +32,28 @@ struct ImuErrorModel {
 };
 
 struct SimOptions {
-    std::string mount = "foot";        // "foot", "chest" or "waist"
-    double rate_hz = 200.0;            // IMU rate; magnetometer and barometer share it
-    uint64_t seed = 1;                 // same seed, same output, bit for bit
-    bool sensor_errors = true;         // false: every sensor is exact (noise, biases, scale, saturation, drift off)
-    double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};  // sensor axes in the foot/body frame: R = Rz(yaw) Ry(pitch) Rx(roll)
+    std::string mount = "foot";  // "foot", "chest" or "waist"
+    double rate_hz = 200.0;      // IMU rate; magnetometer and barometer share it
+    uint64_t seed = 1;           // same seed, same output, bit for bit
+    bool sensor_errors = true;   // false: every sensor is exact (noise, biases, scale, saturation, drift off)
+    double mounting_rpy_deg[3] = {0.0, 0.0,
+                                  0.0};  // sensor axes in the foot/body frame: R = Rz(yaw) Ry(pitch) Rx(roll)
     bool with_mag = true;
     bool with_baro = true;
-    bool with_gnss = true;             // fixes only on outdoor segments
-    double gravity_mps2 = 9.80665;     // |g|, constant over the walk
-    double earth_field_ut = 48.0;      // total intensity of the Earth field
-    double inclination_deg = 64.0;     // dip, positive: field points down
-    double declination_deg = 1.5;      // magnetic north east of true north
+    bool with_gnss = true;          // fixes only on outdoor segments
+    double gravity_mps2 = 9.80665;  // |g|, constant over the walk
+    double earth_field_ut = 48.0;   // total intensity of the Earth field
+    double inclination_deg = 64.0;  // dip, positive: field points down
+    double declination_deg = 1.5;   // magnetic north east of true north
     ImuErrorModel imu;
-    double mag_noise_ut = 0.3;         // white, per axis, per sample
-    double mag_bias_ut = 0.5;          // 1-sigma residual hard-iron bias per axis
-    double baro_noise_pa = 1.5;        // white, per sample
-    double baro_drift_pa_per_s = 0.01; // 1-sigma weather drift rate (about 1 hPa in 3 h)
+    double mag_noise_ut = 0.3;          // white, per axis, per sample
+    double mag_bias_ut = 0.5;           // 1-sigma residual hard-iron bias per axis
+    double baro_noise_pa = 1.5;         // white, per sample
+    double baro_drift_pa_per_s = 0.01;  // 1-sigma weather drift rate (about 1 hPa in 3 h)
     double gnss_rate_hz = 1.0;
-    double gnss_sigma_h_m = 1.5;       // per horizontal axis: slow (Gauss-Markov, 60 s) part
-    double gnss_white_h_m = 0.5;       // per horizontal axis: white part
-    double gnss_sigma_v_m = 3.0;       // vertical
+    double gnss_sigma_h_m = 1.5;  // per horizontal axis: slow (Gauss-Markov, 60 s) part
+    double gnss_white_h_m = 0.5;  // per horizontal axis: white part
+    double gnss_sigma_v_m = 3.0;  // vertical
     double gnss_vel_noise_mps = 0.1;
 };
 
@@ -61,9 +62,9 @@ struct TruthSample {
     double pos_enu_m[3];        // the sensor's position
     double q_enu_from_body[4];  // the sensor's attitude (its own axes, after the mounting rotation), w first
     double vel_enu_mps[3];
-    int stance;                 // foot: 1 while the instrumented foot is flat and still; chest/waist: 1 while standing
+    int stance;  // foot: 1 while the instrumented foot is flat and still; chest/waist: 1 while standing
     int floor;
-    double heading_deg;         // walking direction of the foot/body (before mounting), clockwise from north
+    double heading_deg;  // walking direction of the foot/body (before mounting), clockwise from north
 };
 
 struct SimOutput {
@@ -71,9 +72,10 @@ struct SimOutput {
     std::vector<pn_mag_t> mag;
     std::vector<pn_baro_t> baro;
     std::vector<pn_gnss_t> gnss;
-    std::vector<TruthSample> truth;     // one per IMU sample, same times
-    std::vector<double> step_times_s;   // foot: the start of each stance after a stride of the instrumented foot; chest/waist: every step
-    double distance_m = 0.0;            // horizontal distance walked
+    std::vector<TruthSample> truth;    // one per IMU sample, same times
+    std::vector<double> step_times_s;  // foot: the start of each stance after a stride of the instrumented
+                                       // foot; chest/waist: every step
+    double distance_m = 0.0;           // horizontal distance walked
     double rate_hz = 0.0;
     std::string mount;
     // Time-ordered pointers into the vectors above (equal times: IMU, MAG, BARO, GNSS).
