@@ -14,30 +14,38 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     //   G[ATT,BG] = -R dt, G[POS,VEL] = I dt, G[VEL,ATT] = -skew(f) dt, G[VEL,BA] = -R dt.
     // Phi P Phi^T = P + N + N^T + N_G where N = G P and N_G = G P G^T, written
     // so that the result is exactly symmetric.
-    double Rd[3][3], Sd[3][3];
+    double Rd[3][3];
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) Rd[r][c] = -R(r, c) * dt;
-    const Mat3 s = skew(f);
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) Sd[r][c] = -s(r, c) * dt;
+    const double fx = f.x() * dt, fy = f.y() * dt, fz = f.z() * dt;
+    // -skew(f) dt = [[0, fz, -fy], [-fz, 0, fx], [fy, -fx, 0]]
 
-    // N = G P (rows ATT, POS, VEL only; 9 x 15).
-    double Nm[9][N];
+    // N = G P, rows ATT, POS, VEL (9 x 16).
+    alignas(64) double Nm[9][NP];
     for (int r = 0; r < 3; ++r) {
-        double* na = Nm[r];
-        double* np = Nm[3 + r];
-        double* nv = Nm[6 + r];
+        double* __restrict na = Nm[r];
+        double* __restrict np = Nm[3 + r];
         const double* pv = P_[VEL + r];
-        for (int c = 0; c < N; ++c) {
-            na[c] = Rd[r][0] * P_[BG][c] + Rd[r][1] * P_[BG + 1][c] + Rd[r][2] * P_[BG + 2][c];
+        const double r0 = Rd[r][0], r1 = Rd[r][1], r2 = Rd[r][2];
+        for (int c = 0; c < NP; ++c) {
+            na[c] = r0 * P_[BG][c] + r1 * P_[BG + 1][c] + r2 * P_[BG + 2][c];
             np[c] = dt * pv[c];
-            nv[c] = Sd[r][0] * P_[ATT][c] + Sd[r][1] * P_[ATT + 1][c] + Sd[r][2] * P_[ATT + 2][c] +
-                    Rd[r][0] * P_[BA][c] + Rd[r][1] * P_[BA + 1][c] + Rd[r][2] * P_[BA + 2][c];
         }
     }
-    // N_G = N G^T restricted to rows/cols (ATT, POS, VEL): entry (a, b) =
-    // sum_k N[a][k] G[b][k]. Upper triangle, mirrored.
+    {
+        double* __restrict n0 = Nm[6];
+        double* __restrict n1 = Nm[7];
+        double* __restrict n2 = Nm[8];
+        for (int c = 0; c < NP; ++c) {
+            const double a0 = P_[ATT][c], a1 = P_[ATT + 1][c], a2 = P_[ATT + 2][c];
+            const double b0 = P_[BA][c], b1 = P_[BA + 1][c], b2 = P_[BA + 2][c];
+            n0[c] = fz * a1 - fy * a2 + Rd[0][0] * b0 + Rd[0][1] * b1 + Rd[0][2] * b2;
+            n1[c] = -fz * a0 + fx * a2 + Rd[1][0] * b0 + Rd[1][1] * b1 + Rd[1][2] * b2;
+            n2[c] = fy * a0 - fx * a1 + Rd[2][0] * b0 + Rd[2][1] * b1 + Rd[2][2] * b2;
+        }
+    }
     static constexpr int kRows[9] = {ATT, ATT + 1, ATT + 2, POS, POS + 1, POS + 2, VEL, VEL + 1, VEL + 2};
+    // N_G = N G^T restricted to rows/cols (ATT, POS, VEL): upper triangle, mirrored.
     double NG[9][9];
     for (int a = 0; a < 9; ++a) {
         const double* na = Nm[a];
@@ -47,32 +55,41 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
                 v = Rd[b][0] * na[BG] + Rd[b][1] * na[BG + 1] + Rd[b][2] * na[BG + 2];
             } else if (b < 6) {
                 v = dt * na[VEL + b - 3];
+            } else if (b == 6) {
+                v = fz * na[ATT + 1] - fy * na[ATT + 2] + Rd[0][0] * na[BA] + Rd[0][1] * na[BA + 1] + Rd[0][2] * na[BA + 2];
+            } else if (b == 7) {
+                v = -fz * na[ATT] + fx * na[ATT + 2] + Rd[1][0] * na[BA] + Rd[1][1] * na[BA + 1] + Rd[1][2] * na[BA + 2];
             } else {
-                const int r = b - 6;
-                v = Sd[r][0] * na[ATT] + Sd[r][1] * na[ATT + 1] + Sd[r][2] * na[ATT + 2] +
-                    Rd[r][0] * na[BA] + Rd[r][1] * na[BA + 1] + Rd[r][2] * na[BA + 2];
+                v = fy * na[ATT] - fx * na[ATT + 1] + Rd[2][0] * na[BA] + Rd[2][1] * na[BA + 1] + Rd[2][2] * na[BA + 2];
             }
             NG[a][b] = v;
             NG[b][a] = v;
         }
     }
-    // P += N + N^T + N_G, each entry computed once and mirrored.
-    static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
+    // N^T as a 15 x 16 matrix (zero in the columns BG, BA and the padding).
+    alignas(64) double NT[N][NP];
+    std::memset(NT, 0, sizeof NT);
     for (int a = 0; a < 9; ++a) {
         const int ra = kRows[a];
-        for (int o = 0; o < 6; ++o) {
-            const int c = kOther[o];
-            const double v = P_[ra][c] + Nm[a][c];
-            P_[ra][c] = v;
-            P_[c][ra] = v;
-        }
-        for (int b = a; b < 9; ++b) {
-            const int rb = kRows[b];
-            const double v = P_[ra][rb] + (Nm[a][rb] + Nm[b][ra]) + NG[a][b];
-            P_[ra][rb] = v;
-            P_[rb][ra] = v;
-        }
+        for (int j = 0; j < N; ++j) NT[j][ra] = Nm[a][j];
     }
+    // P += (N + N^T) + N_G: entry (a, b) adds N(a, b) + N(b, a), a commutative
+    // sum, then the mirrored N_G: bit-for-bit symmetric.
+    for (int a = 0; a < 9; ++a) {
+        double* __restrict pa = P_[kRows[a]];
+        const double* __restrict na = Nm[a];
+        const double* __restrict nt = NT[kRows[a]];
+        for (int b = 0; b < NP; ++b) pa[b] += na[b] + nt[b];
+    }
+    static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
+    for (int o = 0; o < 6; ++o) {
+        double* __restrict pa = P_[kOther[o]];
+        const double* __restrict nt = NT[kOther[o]];
+        for (int b = 0; b < NP; ++b) pa[b] += nt[b];
+    }
+    for (int a = 0; a < 9; ++a)
+        for (int b = 0; b < 9; ++b) P_[kRows[a]][kRows[b]] += NG[a][b];
+    for (int r = 0; r < N; ++r) P_[r][N] = 0.0;
     // Q (isotropic densities, so R Q R^T = Q).
     const double qa = q.gyro_psd * dt, qv = q.accel_psd * dt;
     const double qbg = q.gyro_bias_psd * dt, qba = q.accel_bias_psd * dt;
@@ -85,22 +102,24 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
 }
 
 void Ekf15::update_scalar(int i, double z, double var) {
-    double c[N];
-    for (int k = 0; k < N; ++k) c[k] = P_[k][i];
-    const double s = c[i] + var;  // H P H^T + R: a copy of P_ii
+    alignas(64) double c[NP];
+    for (int k = 0; k < N; ++k) c[k] = P_[k][i];  // P H^T: a copy of column i
+    c[N] = 0.0;
+    const double s = c[i] + var;                  // H P H^T + R: a copy of P_ii
     if (!(s > 0)) return;
-    double K[N];
+    alignas(64) double K[NP];
     const double inv = 1.0 / s;
-    for (int k = 0; k < N; ++k) K[k] = c[k] * inv;
+    for (int k = 0; k < NP; ++k) K[k] = c[k] * inv;
     const double innov = z - x_[i];
     for (int k = 0; k < N; ++k) x_[k] += K[k] * innov;
-    // Joseph form (I - K e_i^T) P (I - K e_i^T)^T + K var K^T, expanded for
-    // H = e_i: P - K c^T - c K^T + (c_i + var) K K^T. Upper triangle, mirrored.
+    // Joseph form (I - K e_i^T) P (I - K e_i^T)^T + K var K^T (eq. (33)),
+    // expanded for H = e_i: P + s K K^T - (K c^T + c K^T). Upper triangle,
+    // mirrored: symmetric by construction.
     for (int a = 0; a < N; ++a) {
-        const double ka = K[a], ca = c[a], ska = s * K[a];
+        const double ka = K[a], ca = c[a], ska = s * ka;
         double* pa = P_[a];
         for (int b = a; b < N; ++b) {
-            const double v = pa[b] + ((ska * K[b] - ka * c[b]) - ca * K[b]);
+            const double v = pa[b] + (ska * K[b] - (ka * c[b] + ca * K[b]));
             pa[b] = v;
             P_[b][a] = v;
         }

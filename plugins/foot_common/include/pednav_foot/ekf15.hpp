@@ -20,6 +20,7 @@ namespace pednav::foot {
 class Ekf15 {
 public:
     static constexpr int N = 15;
+    static constexpr int NP = 16;  // row stride: rows padded to 16 doubles (aligned, even length)
     static constexpr int ATT = 0, BG = 3, POS = 6, VEL = 9, BA = 12;
 
     struct Noise {
@@ -47,7 +48,7 @@ public:
     void clear_state() { std::memset(x_, 0, sizeof x_); }
 
 private:
-    double P_[N][N];
+    alignas(64) double P_[N][NP];  // column 15 is padding, always zero
     double x_[N];
 };
 
