@@ -51,15 +51,15 @@ TEST_CASE("canonical CSV: a clean file") {
 
 TEST_CASE("canonical CSV: truncated line, text, NaN, backwards time, duplicate, 10 s gap") {
     const std::string dir = temp_dir();
-    std::string body = canonical_rows(100);            // lines 3..102
-    body += "1.00,0.1,0.2\n";                           // line 103: truncated
-    body += "1.01,0.1,abc,9.8,0,0,0\n";                 // line 104: text in a number
-    body += "1.02,0.1,0.2,NaN,0,0,0\n";                 // line 105: NaN
-    body += "1.03,0.1,0.2,9.8,0,0,0\n";                 // line 106: good
-    body += "0.50,0.1,0.2,9.8,0,0,0\n";                 // line 107: time goes backwards
-    body += "1.03,0.1,0.2,9.8,0,0,0\n";                 // line 108: repeated time
-    body += canonical_rows(100, 11.04);                 // lines 109..208: after a 10 s gap
-    body += "12.05,0.1,0.2,9.";                         // line 209: cut off while writing
+    std::string body = canonical_rows(100);  // lines 3..102
+    body += "1.00,0.1,0.2\n";                // line 103: truncated
+    body += "1.01,0.1,abc,9.8,0,0,0\n";      // line 104: text in a number
+    body += "1.02,0.1,0.2,NaN,0,0,0\n";      // line 105: NaN
+    body += "1.03,0.1,0.2,9.8,0,0,0\n";      // line 106: good
+    body += "0.50,0.1,0.2,9.8,0,0,0\n";      // line 107: time goes backwards
+    body += "1.03,0.1,0.2,9.8,0,0,0\n";      // line 108: repeated time
+    body += canonical_rows(100, 11.04);      // lines 109..208: after a 10 s gap
+    body += "12.05,0.1,0.2,9.";              // line 209: cut off while writing
     const std::string path = write_file(dir, "bad_rows.csv", kHeader + body);
     const SensorLog log = read_sensor_file(path);
     CHECK(log.imu.size() == 100 + 1 + 100);
@@ -102,8 +102,10 @@ TEST_CASE("canonical CSV: optional streams, empty cells, extra columns") {
 TEST_CASE("unit sanity: gravity ~1 and gyro in deg/s are reported, not converted") {
     const std::string dir = temp_dir();
     std::ostringstream body;
-    for (int i = 0; i < 200; ++i) body << i * 0.01 << ",0.01,0.02,1.0," << (i % 20 == 0 ? 300 : 5) << ",0,0\n";
-    const SensorLog log = read_sensor_file(write_file(dir, "units.csv", "t,ax,ay,az,gx,gy,gz\n" + body.str()));
+    for (int i = 0; i < 200; ++i)
+        body << i * 0.01 << ",0.01,0.02,1.0," << (i % 20 == 0 ? 300 : 5) << ",0,0\n";
+    const SensorLog log =
+        read_sensor_file(write_file(dir, "units.csv", "t,ax,ay,az,gx,gy,gz\n" + body.str()));
     CHECK(has_issue(log, 0, "look like g, not m/s^2"));
     CHECK(has_issue(log, 0, "look like deg/s"));
     CHECK(log.imu[0].accel_mps2[2] == doctest::Approx(1.0));  // not converted
@@ -116,11 +118,13 @@ TEST_CASE("fatal: missing, empty, binary, unknown, no accelerometer/gyroscope co
     CHECK(error_of(write_file(dir, "blank.csv", "\n\n  \n")).find("empty") != std::string::npos);
     CHECK(error_of(write_file(dir, "binary.csv", std::string("PK\x03\x04\x00\x00\x01\x02", 8) + "abc"))
               .find("binary file") != std::string::npos);
-    CHECK(error_of(write_file(dir, "unknown.csv", "foo,bar\n1,2\n")).find("unknown format") != std::string::npos);
+    CHECK(error_of(write_file(dir, "unknown.csv", "foo,bar\n1,2\n")).find("unknown format") !=
+          std::string::npos);
     const std::string no_gyro = error_of(write_file(dir, "nogyro.csv", "# x\nt,ax,ay,az\n0,0,0,9.8\n"));
     CHECK(no_gyro.find("nogyro.csv:2: no accelerometer/gyroscope columns: the header lacks gx, gy, gz") !=
           std::string::npos);
-    const std::string only_bad = error_of(write_file(dir, "allbad.csv", "t,ax,ay,az,gx,gy,gz\n0,x,0,0,0,0,0\n"));
+    const std::string only_bad =
+        error_of(write_file(dir, "allbad.csv", "t,ax,ay,az,gx,gy,gz\n0,x,0,0,0,0,0\n"));
     CHECK(only_bad.find("no accelerometer and gyroscope sample could be read") != std::string::npos);
     try {
         read_sensor_file(dir + "/nope.csv");

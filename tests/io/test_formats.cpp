@@ -17,7 +17,8 @@ TEST_CASE("IPIN logfile: streams merged by time, hPa, POSI as ground truth") {
     std::ostringstream f;
     f.precision(10);
     f << "% LogFile created by the 'GetSensorData' App\n"
-      << "% ACCE;AppTimestamp(s);SensorTimestamp(s);Acc_X(m/s^2);Acc_Y(m/s^2);Acc_Z(m/s^2);Accuracy(integer)\n"
+      << "% "
+         "ACCE;AppTimestamp(s);SensorTimestamp(s);Acc_X(m/s^2);Acc_Y(m/s^2);Acc_Z(m/s^2);Accuracy(integer)\n"
       << "POSI;0.010;1;40.31360000;-3.48370000;0;0\n";
     // 50 Hz accelerometer and gyroscope for 4 s; sensor clock = app clock - 100 s, delivered 0-15 ms late.
     for (int i = 0; i < 200; ++i) {
@@ -31,13 +32,13 @@ TEST_CASE("IPIN logfile: streams merged by time, hPa, POSI as ground truth") {
         if (i == 100) f << "WIFI;2.0;2.0;eduroam;00:11:22:33:44:55;2412;-70\n";
     }
     f << "GNSS;1.5;1700000000.5;40.3137;-3.4836;650.0;90.0;5.0;1.2;12;8\n";
-    f << "GYRO;3.0;102.0;abc;0;0;3\n";                               // bad: text
-    f << "POSI;3.990;2;40.31369000;-3.48370000;1;0\n";              // 10 m north, floor 1
+    f << "GYRO;3.0;102.0;abc;0;0;3\n";                  // bad: text
+    f << "POSI;3.990;2;40.31369000;-3.48370000;1;0\n";  // 10 m north, floor 1
     const std::string path = write_file(dir, "logfile.txt", f.str());
     const SensorLog log = read_sensor_file(path);
     CHECK(log.format == "ipin-logfile");
-    // Accelerometer times: sensor clock + (smallest app - sensor) = i * 0.02 + 0.001; gyroscope i * 0.02 + 0.002,
-    // so the first accelerometer sample precedes the gyroscope stream and is dropped.
+    // Accelerometer times: sensor clock + (smallest app - sensor) = i * 0.02 + 0.001; gyroscope i * 0.02 +
+    // 0.002, so the first accelerometer sample precedes the gyroscope stream and is dropped.
     REQUIRE(log.imu.size() == 199);
     CHECK(log.stream("accel")->count == 200);
     CHECK(log.imu[0].header.t_ns == 21000000);
@@ -136,18 +137,20 @@ TEST_CASE("column map: names and indices, units, axis remap, strict keys") {
 
 TEST_CASE("format names and forced formats") {
     const auto names = supported_formats();
-    for (const char* n : {"pednav-csv", "xio-ngimu-csv", "microstrain-sensorconnect-a", "microstrain-sensorconnect-b",
-                          "xsens-mtw-tsv", "xsens-mtmanager-csv", "xsens-converted-g-csv", "humolire-senslogs",
-                          "ipin-logfile", "column-map"}) {
+    for (const char* n : {"pednav-csv", "xio-ngimu-csv", "microstrain-sensorconnect-a",
+                          "microstrain-sensorconnect-b", "xsens-mtw-tsv", "xsens-mtmanager-csv",
+                          "xsens-converted-g-csv", "humolire-senslogs", "ipin-logfile", "column-map"}) {
         CHECK(std::find(names.begin(), names.end(), n) != names.end());
     }
     const std::string dir = temp_dir();
-    const std::string path = write_file(dir, "x.csv", "t,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n");
+    const std::string path =
+        write_file(dir, "x.csv", "t,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n");
     ReadOptions options;
     options.format = "xio-ngimu-csv";
     CHECK_THROWS_AS(read_sensor_file(path, options), ReadError);
     options.format = "no-such-format";
-    CHECK_THROWS_WITH_AS(read_sensor_file(path, options), doctest::Contains("unknown format name"), ReadError);
+    CHECK_THROWS_WITH_AS(read_sensor_file(path, options), doctest::Contains("unknown format name"),
+                         ReadError);
     CHECK(detect_format(path) == "pednav-csv");
 }
 
@@ -173,9 +176,9 @@ TEST_CASE("MicroStrain layout B: a row flagged invalid is skipped") {
     const std::string dir = temp_dir();
     const std::string d = "inertial-1.2:";
     std::string header = "Time";
-    for (const char* c : {"estCompensatedAccelX", "estCompensatedAccelY", "estCompensatedAccelZ", "estAngularRateX",
-                          "estAngularRateY", "estAngularRateZ"}) {
-        header += "," + d + c + "," + d + c + ":valid";
+    for (const char* c : {"estCompensatedAccelX", "estCompensatedAccelY", "estCompensatedAccelZ",
+                          "estAngularRateX", "estAngularRateY", "estAngularRateZ"}) {
+        header.append(",").append(d).append(c).append(",").append(d).append(c).append(":valid");
     }
     std::string text = header + "\n";
     text += "0,1,1,2,1,-9.8,1,0.1,1,0.2,1,0.3,1\n";
@@ -194,7 +197,8 @@ TEST_CASE("MicroStrain layout B: a row flagged invalid is skipped") {
 
 TEST_CASE("Xsens: PacketCounter / rate, unwrapped at 65536; a 10 s gap is reported") {
     const std::string dir = temp_dir();
-    std::string text = "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n";
+    std::string text =
+        "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n";
     for (int c : {65533, 65534, 65535, 0, 1, 1001}) {
         text += std::to_string(c) + ".0\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n";
     }

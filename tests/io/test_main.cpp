@@ -12,7 +12,7 @@ void remove_dir(const std::string& dir) {
     if (DIR* d = opendir(dir.c_str())) {
         while (dirent* e = readdir(d)) {
             const std::string name = e->d_name;
-            if (name != "." && name != "..") unlink((dir + "/" + name).c_str());
+            if (name != "." && name != "..") unlink(std::string(dir).append("/").append(name).c_str());
         }
         closedir(d);
     }

@@ -57,9 +57,9 @@ TEST_CASE("xio-gait-ngimu: 400 Hz NGIMU, deg/s and g, duplicate timestamps dropp
         CHECK(log.imu.front().header.t_ns == 0);  // time starts at 0
         double a0[3];
         mean_accel(log, 50, a0);
-        CHECK(norm3(a0) == doctest::Approx(kG).epsilon(0.02));  // ~1.00 g at the start
+        CHECK(norm3(a0) == doctest::Approx(kG).epsilon(0.02));                     // ~1.00 g at the start
         CHECK(max_gyro_norm(log) / kDeg == doctest::Approx(630.0).epsilon(0.25));  // peaks ~630 deg/s
-        CHECK(max_accel_norm(log) / kG == doctest::Approx(5.0).epsilon(0.3));     // peaks ~5 g
+        CHECK(max_accel_norm(log) / kG == doctest::Approx(5.0).epsilon(0.3));      // peaks ~5 g
     }
     // First row of short_walk: 0,-0.1428319,-0.7708032,-0.2320606,-0.4937814,0.2420433,0.8312204
     const SensorLog log = read_sensor_file(data_dir() + "/xio-gait-ngimu/short_walk.csv");
@@ -79,12 +79,15 @@ TEST_CASE("koroglu-foot-gcp: SensorConnect layouts A (g, gauss) and B (m/s^2, :v
         bool layout_a;
     };
     // SOURCE.md table: rate, rows / duration, columns.
-    const Case cases[] = {{33, 200, 11000, 55.0, true},  {35, 200, 6001, 30.0, true},  {39, 200, 20000, 100.0, true},
-                          {42, 250, 28751, 115.0, false}, {44, 250, 16501, 66.0, false}};
+    const Case cases[] = {{33, 200, 11000, 55.0, true},
+                          {35, 200, 6001, 30.0, true},
+                          {39, 200, 20000, 100.0, true},
+                          {42, 250, 28751, 115.0, false},
+                          {44, 250, 16501, 66.0, false}};
     for (const Case& c : cases) {
         CAPTURE(c.n);
-        const SensorLog log =
-            read_sensor_file(data_dir() + "/koroglu-foot-gcp/SensorConnectData_" + std::to_string(c.n) + ".csv");
+        const SensorLog log = read_sensor_file(data_dir() + "/koroglu-foot-gcp/SensorConnectData_" +
+                                               std::to_string(c.n) + ".csv");
         CHECK(log.format == (c.layout_a ? "microstrain-sensorconnect-a" : "microstrain-sensorconnect-b"));
         CHECK(log.imu.size() == c.rows);
         const StreamInfo& accel = stream_of(log, "accel");
@@ -139,14 +142,16 @@ TEST_CASE("ipol-gait-waist-feet: Xsens MTw tab-separated, PacketCounter / 100 Hz
             CHECK(stream_of(log, "gyro").units_found == "rad/s");
             CHECK(stream_of(log, "mag").units_found == "normalised a.u.");
             CHECK(log.mag.size() == log.imu.size());
-            CHECK(log.imu.front().header.t_ns <= 10000000);  // PacketCounter starts at 0 or 1 (t = counter / 100)
+            CHECK(log.imu.front().header.t_ns <=
+                  10000000);  // PacketCounter starts at 0 or 1 (t = counter / 100)
             CHECK(accel.bad_rows == 0);
             double a0[3];
             mean_accel(log, 100, a0);
             CHECK(norm3(a0) > 9.6);  // 9.8-10.2 at rest, not perfectly calibrated
             CHECK(norm3(a0) < 10.4);
             if (std::string(part) == "_lb") {
-                CHECK(static_cast<double>(log.imu.size()) / 100.0 == doctest::Approx(c.duration_s).epsilon(0.003));
+                CHECK(static_cast<double>(log.imu.size()) / 100.0 ==
+                      doctest::Approx(c.duration_s).epsilon(0.003));
                 // Lower-back peaks are about 2.5-3.5 rad/s.
                 CHECK(max_gyro_norm(log) > 2.0);
                 CHECK(max_gyro_norm(log) < 4.5);
@@ -209,7 +214,8 @@ TEST_CASE("merged_records: time order, IMU before MAG at equal time") {
 
 TEST_CASE("biba-chest-xsens mapmatching_run/sensors.csv: the author's conversion of rita_to_kar undone") {
     if (!have_data("biba-chest-xsens")) return;
-    const SensorLog converted = read_sensor_file(data_dir() + "/biba-chest-xsens/mapmatching_run/sensors.csv");
+    const SensorLog converted =
+        read_sensor_file(data_dir() + "/biba-chest-xsens/mapmatching_run/sensors.csv");
     const SensorLog raw = read_sensor_file(data_dir() + "/biba-chest-xsens/rita_to_kar.txt");
     CHECK(converted.format == "xsens-converted-g-csv");
     // SOURCE.md: same start tick 303336, same 9 444 samples; a = Acc / 9.70 with x/z swapped, gx = Gyr_Z.
@@ -260,11 +266,11 @@ TEST_CASE("humolire-phone: two-file Android logs, ~418 Hz irregular, folder or e
         CHECK(accel.count == c.accel_rows);
         CHECK(gyro.count == c.gyro_rows);
         CHECK(accel.count - gyro.count == doctest::Approx(30).epsilon(0.2));
-        CHECK(accel.rate_hz == doctest::Approx(418.0).epsilon(0.005));  // "frequency": 418.0
+        CHECK(accel.rate_hz == doctest::Approx(418.0).epsilon(0.005));        // "frequency": 418.0
         CHECK(accel.median_rate_hz == doctest::Approx(500.0).epsilon(0.01));  // median dt 2.0 ms
         CHECK(accel.duration_s == doctest::Approx(c.duration_s).epsilon(0.01));
         CHECK(log.imu.size() > c.gyro_rows - 5);  // paired on the accelerometer times within the gyro span
-        CHECK(log.mag.empty());  // no magnetometer, no barometer
+        CHECK(log.mag.empty());                   // no magnetometer, no barometer
         CHECK(log.baro.empty());
         double a0[3];
         mean_accel(log, 200, a0);

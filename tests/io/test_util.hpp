@@ -1,14 +1,14 @@
 // Helpers shared by the io tests.
 #pragma once
 
+#include <sys/stat.h>
+#include <unistd.h>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "pednav_io/sensor_log.hpp"
 
@@ -33,12 +33,12 @@ inline std::string temp_dir() {
     std::string templ = std::string(base ? base : "/tmp") + "/pednav_io_test_XXXXXX";
     char* made = mkdtemp(templ.data());
     if (made == nullptr) return std::string();
-    temp_dirs().push_back(made);
+    temp_dirs().emplace_back(made);
     return made;
 }
 
 inline std::string write_file(const std::string& dir, const std::string& name, const std::string& content) {
-    const std::string path = dir + "/" + name;
+    std::string path = dir + "/" + name;
     std::ofstream out(path, std::ios::binary);
     out << content;
     return path;

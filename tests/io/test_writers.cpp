@@ -88,8 +88,8 @@ TEST_CASE("track CSV round trip") {
     write_track_csv(dir + "/track.csv", track);
     const auto rows = read_csv(dir + "/track.csv");
     REQUIRE(rows.size() == track.size() + 1);
-    CHECK(rows[0] == std::vector<std::string>{"t", "x", "y", "z", "heading_deg", "floor", "cov_xx", "cov_xy", "cov_yy",
-                                              "cov_zz"});
+    CHECK(rows[0] == std::vector<std::string>{"t", "x", "y", "z", "heading_deg", "floor", "cov_xx", "cov_xy",
+                                              "cov_yy", "cov_zz"});
     for (size_t i = 0; i < track.size(); i += 97) {
         const auto& r = rows[i + 1];
         REQUIRE(r.size() == 10);

@@ -19,19 +19,23 @@ void print_text(const pednav::io::SensorLog& log, bool forced) {
                 "duration_s", "start_s", "units (file -> engine)", "gaps", "bad_rows");
     for (const auto& s : log.streams) {
         const std::string units = s.units_found.empty() ? "-" : s.units_found + " -> " + s.units_converted;
-        std::printf("%-9s %9zu %10.3f %10.3f %11.3f %10.3f  %-34s %5zu %8zu\n", s.name.c_str(), s.count, s.rate_hz,
-                    s.median_rate_hz, s.duration_s, s.t_first_s, units.c_str(), s.gaps, s.bad_rows);
+        std::printf("%-9s %9zu %10.3f %10.3f %11.3f %10.3f  %-34s %5zu %8zu\n", s.name.c_str(), s.count,
+                    s.rate_hz, s.median_rate_hz, s.duration_s, s.t_first_s, units.c_str(), s.gaps,
+                    s.bad_rows);
     }
-    std::printf("\nrecords: %zu IMU, %zu magnetometer, %zu barometer, %zu GNSS, %zu ground truth\n", log.imu.size(),
-                log.mag.size(), log.baro.size(), log.gnss.size(), log.truth.size());
+    std::printf("\nrecords: %zu IMU, %zu magnetometer, %zu barometer, %zu GNSS, %zu ground truth\n",
+                log.imu.size(), log.mag.size(), log.baro.size(), log.gnss.size(), log.truth.size());
     if (!log.notes.empty()) {
         std::printf("\nnotes:\n");
         for (const auto& n : log.notes) std::printf("  %s\n", n.c_str());
     }
-    std::printf("\nissues: %zu\n", log.issues.size() + log.issues_not_listed - (log.issues_not_listed > 0 ? 1 : 0));
+    std::printf("\nissues: %zu\n",
+                log.issues.size() + log.issues_not_listed - (log.issues_not_listed > 0 ? 1 : 0));
     for (const auto& i : log.issues) {
-        if (i.line > 0) std::printf("  line %zu: %s\n", i.line, i.message.c_str());
-        else std::printf("  %s\n", i.message.c_str());
+        if (i.line > 0)
+            std::printf("  line %zu: %s\n", i.line, i.message.c_str());
+        else
+            std::printf("  %s\n", i.message.c_str());
     }
 }
 
@@ -45,13 +49,20 @@ int pednav_cmd_inspect(const std::vector<std::string>& argv) {
     io::ReadOptions options;
     while (!args.done()) {
         const std::string a = args.next();
-        if (a == "--json") json = true;
-        else if (a == "--format") options.format = args.value(a);
-        else if (a == "--column-map") column_map_path = args.value(a);
-        else if (a == "--gap") options.gap_s = cli::parse_numbers(args.value(a), 1, a)[0];
-        else if (!a.empty() && a[0] == '-') throw cli::UsageError("unknown option " + a + " for inspect");
-        else if (path.empty()) path = a;
-        else throw cli::UsageError("inspect takes one FILE (got " + path + " and " + a + ")");
+        if (a == "--json")
+            json = true;
+        else if (a == "--format")
+            options.format = args.value(a);
+        else if (a == "--column-map")
+            column_map_path = args.value(a);
+        else if (a == "--gap")
+            options.gap_s = cli::parse_numbers(args.value(a), 1, a)[0];
+        else if (!a.empty() && a[0] == '-')
+            throw cli::UsageError("unknown option " + a + " for inspect");
+        else if (path.empty())
+            path = a;
+        else
+            throw cli::UsageError(std::string("inspect takes one FILE, not also ").append(a));
     }
     if (path.empty()) throw cli::UsageError("inspect needs a FILE");
     nlohmann::json column_map;
@@ -72,8 +83,8 @@ int pednav_cmd_inspect(const std::vector<std::string>& argv) {
         return 0;
     } catch (const io::ReadError& e) {
         if (json) {
-            const nlohmann::json j = {{"path", path},
-                                      {"error", {{"file", e.path()}, {"line", e.line()}, {"reason", e.reason()}}}};
+            const nlohmann::json j = {
+                {"path", path}, {"error", {{"file", e.path()}, {"line", e.line()}, {"reason", e.reason()}}}};
             std::cout << j.dump(2) << "\n";
         }
         std::fprintf(stderr, "pednav inspect: %s\n", e.what());

@@ -34,7 +34,8 @@ bool detect_xsens_mtw_tsv(const TextFile& file);
 bool detect_xsens_mtmanager_csv(const TextFile& file);
 void read_xsens(const TextFile& file, const ReadOptions& options, LogBuilder& builder, SensorLog& log);
 bool detect_biba_converted_csv(const TextFile& file);
-void read_biba_converted_csv(const TextFile& file, const ReadOptions& options, LogBuilder& builder, SensorLog& log);
+void read_biba_converted_csv(const TextFile& file, const ReadOptions& options, LogBuilder& builder,
+                             SensorLog& log);
 bool detect_humolire(const TextFile& file);
 void read_humolire(const TextFile& file, const ReadOptions& options, LogBuilder& builder, SensorLog& log);
 bool detect_ipin(const TextFile& file);
@@ -44,6 +45,7 @@ void read_column_map(const TextFile& file, const ReadOptions& options, LogBuilde
 
 // Applies a column map (docs/formats.md) to a delimited file; shared by the
 // column-map format and built-in maps of known one-off layouts.
-void read_with_column_map(const TextFile& file, const nlohmann::json& map, LogBuilder& builder, SensorLog& log);
+void read_with_column_map(const TextFile& file, const nlohmann::json& map, LogBuilder& builder,
+                          SensorLog& log);
 
 }  // namespace pednav::io::detail

@@ -31,7 +31,8 @@ void geodetic_to_enu(const Origin& origin, double lat_deg, double lon_deg, doubl
     enu_m[2] = height_m - origin.height_m;
 }
 
-void enu_to_geodetic(const Origin& origin, const double enu_m[3], double* lat_deg, double* lon_deg, double* height_m) {
+void enu_to_geodetic(const Origin& origin, const double enu_m[3], double* lat_deg, double* lon_deg,
+                     double* height_m) {
     double m = 0.0, n = 0.0;
     radii(origin.lat_deg, &m, &n);
     *lat_deg = origin.lat_deg + enu_m[1] / (m + origin.height_m) / kDeg;

@@ -41,12 +41,12 @@ double quantile_of(std::vector<double> v, double q) {
 
 const char* stream_name(StreamId s) {
     switch (s) {
-        case kAccel: return "accel";
-        case kGyro: return "gyro";
-        case kMag: return "mag";
-        case kPressure: return "pressure";
-        case kGnss: return "gnss";
-        case kTruth: return "truth";
+        case stream_accel: return "accel";
+        case stream_gyro: return "gyro";
+        case stream_mag: return "mag";
+        case stream_pressure: return "pressure";
+        case stream_gnss: return "gnss";
+        case stream_truth: return "truth";
         default: return "?";
     }
 }
@@ -66,7 +66,7 @@ void LogBuilder::issue(size_t line, const std::string& message) {
 }
 
 void LogBuilder::bad_row(size_t line, const std::string& message, unsigned streams) {
-    for (int s = 0; s < kStreamCount; ++s) {
+    for (int s = 0; s < stream_count; ++s) {
         if (streams & (1u << s)) ++bad_[s];
     }
     issue(line, "row skipped: " + message);
@@ -77,7 +77,8 @@ bool LogBuilder::accept_time(Clock& clock, size_t line, double t_s, unsigned str
     if (clock.has_last) {
         if (t_ns < clock.last_t_ns) {
             bad_row(line,
-                    fmt("time goes backwards (%.9g s after %.9g s)", t_s, static_cast<double>(clock.last_t_ns) * 1e-9) +
+                    fmt("time goes backwards (%.9g s after %.9g s)", t_s,
+                        static_cast<double>(clock.last_t_ns) * 1e-9) +
                         (clock.name.empty() ? std::string() : " in " + clock.name),
                     streams);
             return false;
@@ -102,7 +103,7 @@ void LogBuilder::add_imu(size_t line, double t_s, const double a[3], const doubl
         r.gyro_radps[i] = g[i];
     }
     log_.imu.push_back(r);
-    for (StreamId s : {kAccel, kGyro}) {
+    for (StreamId s : {stream_accel, stream_gyro}) {
         times_[s].push_back(t_s);
         lines_[s].push_back(line);
     }
@@ -111,17 +112,17 @@ void LogBuilder::add_imu(size_t line, double t_s, const double a[3], const doubl
 void LogBuilder::add_accel(size_t line, double t_s, const double a[3]) {
     separate_imu_ = true;
     accel_raw_.push_back({seconds_to_ns(t_s), {a[0], a[1], a[2]}});
-    times_[kAccel].push_back(t_s);
-    lines_[kAccel].push_back(line);
-    stream_context_[kAccel] = context_;
+    times_[stream_accel].push_back(t_s);
+    lines_[stream_accel].push_back(line);
+    stream_context_[stream_accel] = context_;
 }
 
 void LogBuilder::add_gyro(size_t line, double t_s, const double g[3]) {
     separate_imu_ = true;
     gyro_raw_.push_back({seconds_to_ns(t_s), {g[0], g[1], g[2]}});
-    times_[kGyro].push_back(t_s);
-    lines_[kGyro].push_back(line);
-    stream_context_[kGyro] = context_;
+    times_[stream_gyro].push_back(t_s);
+    lines_[stream_gyro].push_back(line);
+    stream_context_[stream_gyro] = context_;
 }
 
 void LogBuilder::add_mag(size_t line, double t_s, const double m[3]) {
@@ -129,8 +130,8 @@ void LogBuilder::add_mag(size_t line, double t_s, const double m[3]) {
     init_header(r, PN_REC_MAG, seconds_to_ns(t_s));
     for (int i = 0; i < 3; ++i) r.mag_ut[i] = m[i];
     log_.mag.push_back(r);
-    times_[kMag].push_back(t_s);
-    lines_[kMag].push_back(line);
+    times_[stream_mag].push_back(t_s);
+    lines_[stream_mag].push_back(line);
 }
 
 void LogBuilder::add_baro(size_t line, double t_s, double p_pa, double temp_c) {
@@ -139,8 +140,8 @@ void LogBuilder::add_baro(size_t line, double t_s, double p_pa, double temp_c) {
     r.pressure_pa = p_pa;
     r.temperature_c = temp_c;
     log_.baro.push_back(r);
-    times_[kPressure].push_back(t_s);
-    lines_[kPressure].push_back(line);
+    times_[stream_pressure].push_back(t_s);
+    lines_[stream_pressure].push_back(line);
 }
 
 void LogBuilder::add_gnss(size_t line, double t_s, pn_gnss_t fix) {
@@ -148,14 +149,14 @@ void LogBuilder::add_gnss(size_t line, double t_s, pn_gnss_t fix) {
     init_header(fix, PN_REC_GNSS, seconds_to_ns(t_s));
     fix.header.flags = flags;
     log_.gnss.push_back(fix);
-    times_[kGnss].push_back(t_s);
-    lines_[kGnss].push_back(line);
+    times_[stream_gnss].push_back(t_s);
+    lines_[stream_gnss].push_back(line);
 }
 
 void LogBuilder::add_truth(size_t line, const TruthPoint& point) {
     log_.truth.push_back(point);
-    times_[kTruth].push_back(point.t_s);
-    lines_[kTruth].push_back(line);
+    times_[stream_truth].push_back(point.t_s);
+    lines_[stream_truth].push_back(line);
 }
 
 void LogBuilder::set_units(StreamId stream, const std::string& found, const std::string& converted) {
@@ -176,7 +177,8 @@ void LogBuilder::pair_accel_gyro() {
         const Raw3& g0 = gyro_raw_[j];
         const Raw3& g1 = (j + 1 < gyro_raw_.size()) ? gyro_raw_[j + 1] : g0;
         double w = 0.0;
-        if (g1.t_ns > g0.t_ns) w = static_cast<double>(a.t_ns - g0.t_ns) / static_cast<double>(g1.t_ns - g0.t_ns);
+        if (g1.t_ns > g0.t_ns)
+            w = static_cast<double>(a.t_ns - g0.t_ns) / static_cast<double>(g1.t_ns - g0.t_ns);
         pn_imu_t r{};
         init_header(r, PN_REC_IMU, a.t_ns);
         for (int i = 0; i < 3; ++i) {
@@ -186,10 +188,11 @@ void LogBuilder::pair_accel_gyro() {
         log_.imu.push_back(r);
     }
     char text[200];
-    std::snprintf(text, sizeof text,
-                  "accelerometer and gyroscope paired on the accelerometer times (gyroscope interpolated "
-                  "linearly): %zu IMU records; %zu accelerometer samples outside the gyroscope's time span dropped",
-                  log_.imu.size(), outside);
+    std::snprintf(
+        text, sizeof text,
+        "accelerometer and gyroscope paired on the accelerometer times (gyroscope interpolated "
+        "linearly): %zu IMU records; %zu accelerometer samples outside the gyroscope's time span dropped",
+        log_.imu.size(), outside);
     note(text);
 }
 
@@ -199,7 +202,8 @@ void LogBuilder::report_gaps(StreamId stream, const char* label) {
     for (size_t i = 1; i < t.size(); ++i) {
         const double dt = t[i] - t[i - 1];
         if (dt > options_.gap_s) {
-            issue(lines_[stream][i], fmt("gap of %.3f s in ", dt) + label + fmt(" (from t=%.3f s to t=%.3f s)", t[i - 1], t[i]));
+            issue(lines_[stream][i],
+                  fmt("gap of %.3f s in ", dt) + label + fmt(" (from t=%.3f s to t=%.3f s)", t[i - 1], t[i]));
         }
     }
 }
@@ -215,11 +219,17 @@ void LogBuilder::check_units() {
         }
         const double a_med = median_of(a_norm);
         if (a_med > 0.5 && a_med < 1.5) {
-            issue(0, fmt("unit check: accelerometer magnitude median %.3f: gravity reads ~1, the values look like g, "
-                         "not m/s^2; not converted (the format does not say g: use a column map with unit \"g\")",
-                         a_med));
+            issue(
+                0,
+                fmt("unit check: accelerometer magnitude median %.3f: gravity reads ~1, the values look like "
+                    "g, "
+                    "not m/s^2; not converted (the format does not say g: use a column map with unit \"g\")",
+                    a_med));
         } else if (a_med > 30.0) {
-            issue(0, fmt("unit check: accelerometer magnitude median %.3f m/s^2 is far above gravity: wrong unit?", a_med));
+            issue(
+                0,
+                fmt("unit check: accelerometer magnitude median %.3f m/s^2 is far above gravity: wrong unit?",
+                    a_med));
         } else if (a_med < 0.5) {
             issue(0, fmt("unit check: accelerometer magnitude median %.3f m/s^2: no gravity in the signal "
                          "(linear acceleration?) or wrong unit",
@@ -227,7 +237,8 @@ void LogBuilder::check_units() {
         }
         const double w_p99 = quantile_of(w_norm, 0.99);
         if (w_p99 > 25.0) {
-            issue(0, fmt("unit check: gyroscope 99th percentile %.1f rad/s is implausible for a walk: the values look "
+            issue(0, fmt("unit check: gyroscope 99th percentile %.1f rad/s is implausible for a walk: the "
+                         "values look "
                          "like deg/s; not converted (use a column map with unit \"deg/s\")",
                          w_p99));
         }
@@ -237,11 +248,13 @@ void LogBuilder::check_units() {
         for (const auto& r : log_.mag) m.push_back(std::hypot(r.mag_ut[0], r.mag_ut[1], r.mag_ut[2]));
         const double m_med = median_of(m);
         if (m_med < 5.0) {
-            issue(0, fmt("unit check: magnetometer magnitude median %.3f uT is far below the Earth's field (25-65 uT): "
+            issue(0, fmt("unit check: magnetometer magnitude median %.3f uT is far below the Earth's field "
+                         "(25-65 uT): "
                          "gauss or normalised units?",
                          m_med));
         } else if (m_med > 200.0) {
-            issue(0, fmt("unit check: magnetometer magnitude median %.1f uT is far above the Earth's field: nT or mG?",
+            issue(0, fmt("unit check: magnetometer magnitude median %.1f uT is far above the Earth's field: "
+                         "nT or mG?",
                          m_med));
         }
     }
@@ -250,7 +263,9 @@ void LogBuilder::check_units() {
         for (const auto& r : log_.baro) p.push_back(r.pressure_pa);
         const double p_med = median_of(p);
         if (p_med < 30000.0 || p_med > 110000.0) {
-            issue(0, fmt("unit check: pressure median %.3f Pa is not an atmospheric pressure in Pa: hPa or kPa?", p_med));
+            issue(0,
+                  fmt("unit check: pressure median %.3f Pa is not an atmospheric pressure in Pa: hPa or kPa?",
+                      p_med));
         }
     }
 }
@@ -263,25 +278,26 @@ void LogBuilder::finish() {
     }
     for (const auto& [name, d] : duplicates_) {
         char text[200];
-        std::snprintf(text, sizeof text, "%zu samples with a repeated timestamp dropped%s%s (first at line %zu)",
-                      d.count, name.empty() ? "" : " in ", name.c_str(), d.first_line);
+        std::snprintf(text, sizeof text,
+                      "%zu samples with a repeated timestamp dropped%s%s (first at line %zu)", d.count,
+                      name.empty() ? "" : " in ", name.c_str(), d.first_line);
         issue(d.first_line, text);
         note(text);
     }
     if (separate_imu_) {
-        report_gaps(kAccel, "accel");
-        report_gaps(kGyro, "gyro");
+        report_gaps(stream_accel, "accel");
+        report_gaps(stream_gyro, "gyro");
     } else {
-        report_gaps(kAccel, "accel/gyro");
+        report_gaps(stream_accel, "accel/gyro");
     }
-    report_gaps(kMag, "mag");
-    report_gaps(kPressure, "pressure");
-    report_gaps(kGnss, "gnss");
+    report_gaps(stream_mag, "mag");
+    report_gaps(stream_pressure, "pressure");
+    report_gaps(stream_gnss, "gnss");
     context_.clear();
     check_units();
 
     log_.streams.clear();
-    for (int s = 0; s < kStreamCount; ++s) {
+    for (int s = 0; s < stream_count; ++s) {
         const auto id = static_cast<StreamId>(s);
         const auto& t = times_[s];
         if (t.empty() && units_found_[s].empty() && bad_[s] == 0) continue;
@@ -303,7 +319,7 @@ void LogBuilder::finish() {
             const double dt_median = median_of(std::move(dt));
             if (dt_median > 0) info.median_rate_hz = 1.0 / dt_median;
             // Truth points are sparse by nature: no gap count for them.
-            if (id != kTruth) {
+            if (id != stream_truth) {
                 for (size_t i = 1; i < t.size(); ++i) {
                     if (t[i] - t[i - 1] > options_.gap_s) ++info.gaps;
                 }

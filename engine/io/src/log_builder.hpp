@@ -13,15 +13,23 @@
 
 namespace pednav::io::detail {
 
-enum StreamId { kAccel = 0, kGyro, kMag, kPressure, kGnss, kTruth, kStreamCount };
+enum StreamId {
+    stream_accel = 0,
+    stream_gyro,
+    stream_mag,
+    stream_pressure,
+    stream_gnss,
+    stream_truth,
+    stream_count
+};
 constexpr unsigned stream_bit(StreamId s) { return 1u << static_cast<unsigned>(s); }
-constexpr unsigned kImuBits = stream_bit(kAccel) | stream_bit(kGyro);
+constexpr unsigned kImuBits = stream_bit(stream_accel) | stream_bit(stream_gyro);
 const char* stream_name(StreamId s);
 
 // Time order of one clock: the row clock of a one-table file, or the own clock
 // of one stream in a multi-stream file.
 struct Clock {
-    explicit Clock(std::string name_) : name(std::move(name_)) {}
+    explicit Clock(std::string clock_name) : name(std::move(clock_name)) {}
     std::string name;
     bool has_last = false;
     int64_t last_t_ns = 0;
@@ -70,13 +78,13 @@ private:
 
     SensorLog& log_;
     std::string context_;
-    std::string stream_context_[kStreamCount];  // context_ when the stream's samples were added
+    std::string stream_context_[stream_count];  // context_ when the stream's samples were added
     ReadOptions options_;
-    std::vector<double> times_[kStreamCount];
-    std::vector<size_t> lines_[kStreamCount];
-    size_t bad_[kStreamCount] = {};
-    std::string units_found_[kStreamCount];
-    std::string units_converted_[kStreamCount];
+    std::vector<double> times_[stream_count];
+    std::vector<size_t> lines_[stream_count];
+    size_t bad_[stream_count] = {};
+    std::string units_found_[stream_count];
+    std::string units_converted_[stream_count];
     std::vector<Raw3> accel_raw_, gyro_raw_;
     bool separate_imu_ = false;
     struct DuplicateCount {

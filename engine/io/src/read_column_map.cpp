@@ -21,7 +21,9 @@ struct MapError {
     std::string message;
 };
 
-[[noreturn]] void fail(const std::string& pointer, const std::string& message) { throw MapError{pointer, message}; }
+[[noreturn]] void fail(const std::string& pointer, const std::string& message) {
+    throw MapError{pointer, message};
+}
 
 void check_keys(const json& object, const std::string& pointer, std::initializer_list<const char*> allowed) {
     if (!object.is_object()) fail(pointer, "must be an object");
@@ -62,7 +64,8 @@ double number_of(const json& object, const char* key, const std::string& pointer
     return v;
 }
 
-void read_vec(const json& object, const std::string& pointer, const std::vector<std::string>& names, Vec3Spec* v) {
+void read_vec(const json& object, const std::string& pointer, const std::vector<std::string>& names,
+              Vec3Spec* v) {
     if (!object.contains("columns") || !object["columns"].is_array() || object["columns"].size() != 3) {
         fail(pointer + "/columns", "must list 3 columns (x, y, z of the sensor)");
     }
@@ -87,7 +90,8 @@ void parse_axes(const std::string& text, double R[9], const std::string& pointer
             sign = src[0] == '-' ? -1.0 : 1.0;
             src = std::string(trim(src.substr(1)));
         }
-        if (body.size() != 1 || src.size() != 1 || body[0] < 'x' || body[0] > 'z' || src[0] < 'x' || src[0] > 'z') {
+        if (body.size() != 1 || src.size() != 1 || body[0] < 'x' || body[0] > 'z' || src[0] < 'x' ||
+            src[0] > 'z') {
             fail(pointer, "cannot read '" + std::string(part) + "'");
         }
         const int b = body[0] - 'x', s = src[0] - 'x';
@@ -115,12 +119,14 @@ void quaternion_to_matrix(const json& q, double R[9], const std::string& pointer
 }
 
 double determinant(const double R[9]) {
-    return R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) + R[2] * (R[3] * R[7] - R[4] * R[6]);
+    return R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+           R[2] * (R[3] * R[7] - R[4] * R[6]);
 }
 
 void apply_map(const TextFile& file, const json& map, LogBuilder& builder, SensorLog& log) {
-    check_keys(map, "", {"delimiter", "header_line", "comment_prefixes", "time", "accel", "gyro", "mag", "pressure",
-                         "axes", "rotation_q_body_from_sensor", "description"});
+    check_keys(map, "",
+               {"delimiter", "header_line", "comment_prefixes", "time", "accel", "gyro", "mag", "pressure",
+                "axes", "rotation_q_body_from_sensor", "description"});
     TableSpec spec;
     // Header.
     size_t header_index = first_content_line(file);
@@ -140,7 +146,8 @@ void apply_map(const TextFile& file, const json& map, LogBuilder& builder, Senso
     }
     const std::string_view header_text =
         header_index == std::string::npos
-            ? (first_content_line(file) < file.lines.size() ? file.lines[first_content_line(file)] : std::string_view())
+            ? (first_content_line(file) < file.lines.size() ? file.lines[first_content_line(file)]
+                                                            : std::string_view())
             : (header_index < file.lines.size() ? file.lines[header_index] : std::string_view());
     spec.delim = guess_delimiter(header_text);
     if (map.contains("delimiter")) {
@@ -168,7 +175,7 @@ void apply_map(const TextFile& file, const json& map, LogBuilder& builder, Senso
     spec.counter_wrap = time.contains("wrap") ? number_of(time, "wrap", "/time", 0.0) : 0.0;
     std::string time_text;
     if (time.contains("rate_hz")) {
-        spec.time_kind = TableSpec::TimeKind::kCounter;
+        spec.time_kind = TableSpec::TimeKind::counter;
         spec.counter_rate_hz = number_of(time, "rate_hz", "/time", 0.0);
         char text[96];
         std::snprintf(text, sizeof text, "sample counter / %.6g Hz", spec.counter_rate_hz);
@@ -180,11 +187,16 @@ void apply_map(const TextFile& file, const json& map, LogBuilder& builder, Senso
         time_text = text;
     } else {
         const std::string unit = unit_of(time, "/time", "s");
-        if (unit == "s") spec.time_scale = 1.0;
-        else if (unit == "ms") spec.time_scale = 1e-3;
-        else if (unit == "us") spec.time_scale = 1e-6;
-        else if (unit == "ns") spec.time_scale = 1e-9;
-        else fail("/time/unit", "unknown unit '" + unit + "' (s, ms, us, ns; or give scale_s or rate_hz)");
+        if (unit == "s")
+            spec.time_scale = 1.0;
+        else if (unit == "ms")
+            spec.time_scale = 1e-3;
+        else if (unit == "us")
+            spec.time_scale = 1e-6;
+        else if (unit == "ns")
+            spec.time_scale = 1e-9;
+        else
+            fail("/time/unit", "unknown unit '" + unit + "' (s, ms, us, ns; or give scale_s or rate_hz)");
         time_text = unit;
     }
 
@@ -196,30 +208,40 @@ void apply_map(const TextFile& file, const json& map, LogBuilder& builder, Senso
     check_keys(accel, "/accel", {"columns", "unit", "gravity_mps2"});
     read_vec(accel, "/accel", spec.names, &spec.accel);
     const std::string a_unit = unit_of(accel, "/accel", "m/s^2");
-    if (a_unit == "g") spec.accel.scale = number_of(accel, "gravity_mps2", "/accel", kStandardGravity);
-    else if (a_unit != "m/s^2") fail("/accel/unit", "unknown unit '" + a_unit + "' (m/s^2 or g)");
-    builder.set_units(kAccel, a_unit, "m/s^2");
+    if (a_unit == "g")
+        spec.accel.scale = number_of(accel, "gravity_mps2", "/accel", kStandardGravity);
+    else if (a_unit != "m/s^2")
+        fail("/accel/unit", "unknown unit '" + a_unit + "' (m/s^2 or g)");
+    builder.set_units(stream_accel, a_unit, "m/s^2");
 
     const json& gyro = map["gyro"];
     check_keys(gyro, "/gyro", {"columns", "unit"});
     read_vec(gyro, "/gyro", spec.names, &spec.gyro);
     const std::string g_unit = unit_of(gyro, "/gyro", "rad/s");
-    if (g_unit == "deg/s") spec.gyro.scale = kDegToRad;
-    else if (g_unit != "rad/s") fail("/gyro/unit", "unknown unit '" + g_unit + "' (rad/s or deg/s)");
-    builder.set_units(kGyro, g_unit, "rad/s");
+    if (g_unit == "deg/s")
+        spec.gyro.scale = kDegToRad;
+    else if (g_unit != "rad/s")
+        fail("/gyro/unit", "unknown unit '" + g_unit + "' (rad/s or deg/s)");
+    builder.set_units(stream_gyro, g_unit, "rad/s");
 
     if (map.contains("mag")) {
         const json& mag = map["mag"];
         check_keys(mag, "/mag", {"columns", "unit", "normalised_field_ut"});
         read_vec(mag, "/mag", spec.names, &spec.mag);
         const std::string m_unit = unit_of(mag, "/mag", "uT");
-        if (m_unit == "uT") spec.mag.scale = 1.0;
-        else if (m_unit == "gauss") spec.mag.scale = 100.0;
-        else if (m_unit == "mG") spec.mag.scale = 0.1;
-        else if (m_unit == "nT") spec.mag.scale = 1e-3;
-        else if (m_unit == "normalised") spec.mag.scale = number_of(mag, "normalised_field_ut", "/mag", 50.0);
-        else fail("/mag/unit", "unknown unit '" + m_unit + "' (uT, gauss, mG, nT, normalised)");
-        builder.set_units(kMag, m_unit == "normalised" ? "normalised a.u." : m_unit, "uT");
+        if (m_unit == "uT")
+            spec.mag.scale = 1.0;
+        else if (m_unit == "gauss")
+            spec.mag.scale = 100.0;
+        else if (m_unit == "mG")
+            spec.mag.scale = 0.1;
+        else if (m_unit == "nT")
+            spec.mag.scale = 1e-3;
+        else if (m_unit == "normalised")
+            spec.mag.scale = number_of(mag, "normalised_field_ut", "/mag", 50.0);
+        else
+            fail("/mag/unit", "unknown unit '" + m_unit + "' (uT, gauss, mG, nT, normalised)");
+        builder.set_units(stream_mag, m_unit == "normalised" ? "normalised a.u." : m_unit, "uT");
     }
     if (map.contains("pressure")) {
         const json& p = map["pressure"];
@@ -227,11 +249,15 @@ void apply_map(const TextFile& file, const json& map, LogBuilder& builder, Senso
         if (!p.contains("column")) fail("/pressure/column", "is required");
         spec.pressure_col = resolve_column(p["column"], spec.names, "/pressure/column");
         const std::string p_unit = unit_of(p, "/pressure", "Pa");
-        if (p_unit == "Pa") spec.pressure_scale = 1.0;
-        else if (p_unit == "hPa" || p_unit == "mbar") spec.pressure_scale = 100.0;
-        else if (p_unit == "kPa") spec.pressure_scale = 1000.0;
-        else fail("/pressure/unit", "unknown unit '" + p_unit + "' (Pa, hPa, mbar, kPa)");
-        builder.set_units(kPressure, p_unit, "Pa");
+        if (p_unit == "Pa")
+            spec.pressure_scale = 1.0;
+        else if (p_unit == "hPa" || p_unit == "mbar")
+            spec.pressure_scale = 100.0;
+        else if (p_unit == "kPa")
+            spec.pressure_scale = 1000.0;
+        else
+            fail("/pressure/unit", "unknown unit '" + p_unit + "' (Pa, hPa, mbar, kPa)");
+        builder.set_units(stream_pressure, p_unit, "Pa");
     }
 
     // Sensor-to-body rotation, the same for every vector stream.
@@ -250,8 +276,9 @@ void apply_map(const TextFile& file, const json& map, LogBuilder& builder, Senso
         axes_text = "sensor axes rotated by rotation_q_body_from_sensor";
     }
     if (determinant(R) < 0) {
-        builder.issue(0, "the axis remap is a reflection (determinant -1): right only if the file's axes are "
-                         "left-handed");
+        builder.issue(0,
+                      "the axis remap is a reflection (determinant -1): right only if the file's axes are "
+                      "left-handed");
     }
     for (Vec3Spec* v : {&spec.accel, &spec.gyro, &spec.mag}) {
         for (int i = 0; i < 9; ++i) v->R[i] = R[i];
@@ -268,7 +295,9 @@ void read_with_column_map(const TextFile& file, const json& map, LogBuilder& bui
     try {
         apply_map(file, inner, builder, log);
     } catch (const MapError& e) {
-        throw ReadError(file.path, 0, "column map " + (e.pointer.empty() ? std::string("/") : e.pointer) + ": " + e.message);
+        throw ReadError(
+            file.path, 0,
+            "column map " + (e.pointer.empty() ? std::string("/") : e.pointer) + ": " + e.message);
     }
 }
 
@@ -276,7 +305,8 @@ bool detect_column_map(const TextFile&) { return false; }
 
 void read_column_map(const TextFile& file, const ReadOptions& options, LogBuilder& builder, SensorLog& log) {
     if (options.column_map == nullptr) {
-        throw ReadError(file.path, 0, "format column-map needs a column map (ReadOptions::column_map / --column-map)");
+        throw ReadError(file.path, 0,
+                        "format column-map needs a column map (ReadOptions::column_map / --column-map)");
     }
     read_with_column_map(file, *options.column_map, builder, log);
 }
@@ -301,8 +331,9 @@ void read_biba_converted_csv(const TextFile& file, const ReadOptions&, LogBuilde
     };
     read_with_column_map(file, map, builder, log);
     log.axes = "Xsens sensor frame x, y, z of the original export (the file's x/z swap undone), not levelled";
-    builder.note("converted Xsens export: accelerometer in g of 9.70 m/s^2 (the author's divisor), columns x/z "
-                 "swapped back; magnetometer normalised, scaled by a nominal 50 uT; pressure in hPa");
+    builder.note(
+        "converted Xsens export: accelerometer in g of 9.70 m/s^2 (the author's divisor), columns x/z "
+        "swapped back; magnetometer normalised, scaled by a nominal 50 uT; pressure in hPa");
 }
 
 }  // namespace pednav::io::detail

@@ -43,9 +43,10 @@ std::string sibling(const std::string& path, const std::string& from, const std:
 
 void read_stream(const TextFile& file, bool accel, LogBuilder& builder) {
     const size_t header = header_index(file);
-    if (header == std::string::npos) throw ReadError(file.path, 0, "no 'elapsed-time-system ...' header line");
+    if (header == std::string::npos)
+        throw ReadError(file.path, 0, "no 'elapsed-time-system ...' header line");
     const std::string name = base_name(file.path);
-    const unsigned bits = stream_bit(accel ? kAccel : kGyro);
+    const unsigned bits = stream_bit(accel ? stream_accel : stream_gyro);
     builder.set_context(name);
     Clock clock(name);
     std::vector<std::string_view> fields;
@@ -63,8 +64,9 @@ void read_stream(const TextFile& file, bool accel, LogBuilder& builder) {
         bool ok = true;
         for (int k = 0; k < 5 && ok; ++k) {
             const NumberStatus status = parse_number(fields[static_cast<size_t>(k)], &v[k]);
-            if (status != NumberStatus::kOk) {
-                builder.bad_row(line_no, describe_bad_number(status, fields[static_cast<size_t>(k)], columns[k]), bits);
+            if (status != NumberStatus::ok) {
+                builder.bad_row(
+                    line_no, describe_bad_number(status, fields[static_cast<size_t>(k)], columns[k]), bits);
                 ok = false;
             }
         }
@@ -102,8 +104,10 @@ void read_humolire(const TextFile& file, const ReadOptions&, LogBuilder& builder
     try {
         other = load_text_file(other_path);
     } catch (const ReadError& e) {
-        throw ReadError(file.path, 0, std::string("two-file recording: the ") + (given_accel ? "gyroscope" : "accelerometer") +
-                                          " file " + other_path + ": " + e.reason());
+        throw ReadError(file.path, 0,
+                        std::string("two-file recording: the ") +
+                            (given_accel ? "gyroscope" : "accelerometer") + " file " + other_path + ": " +
+                            e.reason());
     }
     const TextFile& accel_file = given_accel ? file : other;
     const TextFile& gyro_file = given_accel ? other : file;
@@ -114,16 +118,18 @@ void read_humolire(const TextFile& file, const ReadOptions&, LogBuilder& builder
         builder.issue(3, base_name(accel_file.path) + ": unit line does not say m/s^2 ('" + accel_units +
                              "'); read as m/s^2");
     }
-    if (gyro_units.find("radians/second") == std::string::npos && gyro_units.find("rad/s") == std::string::npos) {
-        builder.issue(3, base_name(gyro_file.path) + ": unit line does not say radians/second ('" + gyro_units +
-                             "'); read as rad/s");
+    if (gyro_units.find("radians/second") == std::string::npos &&
+        gyro_units.find("rad/s") == std::string::npos) {
+        builder.issue(3, base_name(gyro_file.path) + ": unit line does not say radians/second ('" +
+                             gyro_units + "'); read as rad/s");
     }
-    builder.set_units(kAccel, "m/s^2", "m/s^2");
-    builder.set_units(kGyro, "rad/s", "rad/s");
+    builder.set_units(stream_accel, "m/s^2", "m/s^2");
+    builder.set_units(stream_gyro, "rad/s", "rad/s");
     read_stream(accel_file, true, builder);
     read_stream(gyro_file, false, builder);
     log.axes = kAndroidAxesText;
-    builder.note("two files: " + accel_file.path + " and " + gyro_file.path + "; time from elapsed-time-sensor");
+    builder.note("two files: " + accel_file.path + " and " + gyro_file.path +
+                 "; time from elapsed-time-sensor");
 }
 
 }  // namespace pednav::io::detail

@@ -48,7 +48,8 @@ bool detect_ipin(const TextFile& file) {
         ++seen;
         if (!is_tag(line)) return false;
         const std::string_view tag = line.substr(0, 4);
-        if (tag == "ACCE" || tag == "GYRO" || tag == "MAGN" || tag == "PRES" || tag == "POSI" || tag == "GNSS") {
+        if (tag == "ACCE" || tag == "GYRO" || tag == "MAGN" || tag == "PRES" || tag == "POSI" ||
+            tag == "GNSS") {
             return true;
         }
     }
@@ -67,14 +68,16 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
 
     // Values expected after the tag: timestamps included.
     const std::map<std::string, size_t> min_fields = {{"ACCE", 6}, {"GYRO", 6}, {"MAGN", 6},
-                                                       {"PRES", 4}, {"GNSS", 9}, {"POSI", 6}};
-    const unsigned all_bits = kImuBits | stream_bit(kMag) | stream_bit(kPressure) | stream_bit(kGnss);
+                                                      {"PRES", 4}, {"GNSS", 9}, {"POSI", 6}};
+    const unsigned all_bits =
+        kImuBits | stream_bit(stream_mag) | stream_bit(stream_pressure) | stream_bit(stream_gnss);
     for (size_t index = 0; index < file.lines.size(); ++index) {
         const size_t line_no = index + 1;
         const std::string_view line = trim(file.lines[index]);
         if (line.empty() || line[0] == '%') continue;
         if (!is_tag(line)) {
-            builder.bad_row(line_no, "not a 'TAG;...' line: '" + std::string(line.substr(0, 40)) + "'", all_bits);
+            builder.bad_row(line_no, "not a 'TAG;...' line: '" + std::string(line.substr(0, 40)) + "'",
+                            all_bits);
             continue;
         }
         const std::string tag(line.substr(0, 4));
@@ -85,15 +88,16 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
         }
         split_into(line.substr(5), ';', fields);
         while (!fields.empty() && fields.back().empty()) fields.pop_back();  // trailing ';'
-        const unsigned bits = tag == "ACCE"   ? stream_bit(kAccel)
-                              : tag == "GYRO" ? stream_bit(kGyro)
-                              : tag == "MAGN" ? stream_bit(kMag)
-                              : tag == "PRES" ? stream_bit(kPressure)
-                              : tag == "GNSS" ? stream_bit(kGnss)
-                                              : stream_bit(kTruth);
+        const unsigned bits = tag == "ACCE"   ? stream_bit(stream_accel)
+                              : tag == "GYRO" ? stream_bit(stream_gyro)
+                              : tag == "MAGN" ? stream_bit(stream_mag)
+                              : tag == "PRES" ? stream_bit(stream_pressure)
+                              : tag == "GNSS" ? stream_bit(stream_gnss)
+                                              : stream_bit(stream_truth);
         if (fields.size() < need->second) {
-            builder.bad_row(line_no, tag + " line truncated: " + std::to_string(fields.size()) + " fields, " +
-                                         std::to_string(need->second) + " expected",
+            builder.bad_row(line_no,
+                            tag + " line truncated: " + std::to_string(fields.size()) + " fields, " +
+                                std::to_string(need->second) + " expected",
                             bits);
             continue;
         }
@@ -101,11 +105,14 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
         const size_t used = std::min<size_t>(fields.size(), 12);
         bool ok = true;
         for (size_t k = 0; k < used && ok; ++k) {
-            // The trailing accuracy / satellite counts may be absent or text; only the needed ones must parse.
+            // The trailing accuracy / satellite counts may be absent or text; only the needed ones must
+            // parse.
             const NumberStatus status = parse_number(fields[k], &v[k]);
-            if (status != NumberStatus::kOk && k < need->second) {
-                builder.bad_row(line_no, tag + " " + describe_bad_number(status, fields[k], "field " + std::to_string(k + 2)),
-                                bits);
+            if (status != NumberStatus::ok && k < need->second) {
+                builder.bad_row(
+                    line_no,
+                    tag + " " + describe_bad_number(status, fields[k], "field " + std::to_string(k + 2)),
+                    bits);
                 ok = false;
             }
         }
@@ -130,11 +137,13 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
         const char* tag;
         StreamId id;
     };
-    for (const Inertial in : {Inertial{"ACCE", kAccel}, Inertial{"GYRO", kGyro}, Inertial{"MAGN", kMag}}) {
+    for (const Inertial in :
+         {Inertial{"ACCE", stream_accel}, Inertial{"GYRO", stream_gyro}, Inertial{"MAGN", stream_mag}}) {
         const auto& s = streams[in.tag];
         if (s.empty()) continue;
         const double offset = offset_of(s);
-        std::snprintf(text, sizeof text, "%s: sensor clock + %.6f s = app clock (smallest delivery delay)", in.tag, offset);
+        std::snprintf(text, sizeof text, "%s: sensor clock + %.6f s = app clock (smallest delivery delay)",
+                      in.tag, offset);
         builder.note(text);
         Clock clock(in.tag);
         for (const auto& r : s) {
@@ -142,23 +151,27 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
             if (!builder.accept_time(clock, r.line, t, stream_bit(in.id))) continue;
             double body[3];
             android_to_flu(r.v, body);
-            if (in.id == kAccel) builder.add_accel(r.line, t, body);
-            else if (in.id == kGyro) builder.add_gyro(r.line, t, body);
-            else builder.add_mag(r.line, t, body);
+            if (in.id == stream_accel)
+                builder.add_accel(r.line, t, body);
+            else if (in.id == stream_gyro)
+                builder.add_gyro(r.line, t, body);
+            else
+                builder.add_mag(r.line, t, body);
         }
     }
-    builder.set_units(kAccel, "m/s^2", "m/s^2");
-    builder.set_units(kGyro, "rad/s", "rad/s");
-    if (!streams["MAGN"].empty()) builder.set_units(kMag, "uT", "uT");
+    builder.set_units(stream_accel, "m/s^2", "m/s^2");
+    builder.set_units(stream_gyro, "rad/s", "rad/s");
+    if (!streams["MAGN"].empty()) builder.set_units(stream_mag, "uT", "uT");
     if (!streams["PRES"].empty()) {
         const auto& s = streams["PRES"];
         const double offset = offset_of(s);
         Clock clock("PRES");
         for (const auto& r : s) {
             const double t = r.sensor_s + offset;
-            if (builder.accept_time(clock, r.line, t, stream_bit(kPressure))) builder.add_baro(r.line, t, r.v[0] * 100.0, NAN);
+            if (builder.accept_time(clock, r.line, t, stream_bit(stream_pressure)))
+                builder.add_baro(r.line, t, r.v[0] * 100.0, NAN);
         }
-        builder.set_units(kPressure, "hPa", "Pa");
+        builder.set_units(stream_pressure, "hPa", "Pa");
     }
     if (!streams["GNSS"].empty()) {
         Clock clock("GNSS");
@@ -175,36 +188,46 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
             fix.vel_enu_mps[0] = speed * std::sin(bearing_rad);
             fix.vel_enu_mps[1] = speed * std::cos(bearing_rad);
             fix.vel_enu_mps[2] = 0.0;
-            // With 9 values the 7th is UTCTime(ms); else the sensor timestamp is Unix seconds when it looks like one.
-            if (r.n >= 9) fix.utc_ns = static_cast<int64_t>(std::llround(r.v[6] * 1e6));
-            else if (r.sensor_s > 1e9) fix.utc_ns = static_cast<int64_t>(std::llround(r.sensor_s * 1e9));
+            // With 9 values the 7th is UTCTime(ms); else the sensor timestamp is Unix seconds when it looks
+            // like one.
+            if (r.n >= 9)
+                fix.utc_ns = static_cast<int64_t>(std::llround(r.v[6] * 1e6));
+            else if (r.sensor_s > 1e9)
+                fix.utc_ns = static_cast<int64_t>(std::llround(r.sensor_s * 1e9));
             if (std::fabs(fix.lat_deg) > 90 || std::fabs(fix.lon_deg) > 180) {
-                builder.bad_row(r.line, "GNSS latitude/longitude out of range", stream_bit(kGnss));
+                builder.bad_row(r.line, "GNSS latitude/longitude out of range", stream_bit(stream_gnss));
                 continue;
             }
-            if (!builder.accept_time(clock, r.line, r.app_s, stream_bit(kGnss))) continue;
+            if (!builder.accept_time(clock, r.line, r.app_s, stream_bit(stream_gnss))) continue;
             fix.header.flags = speed > 0 || bearing_rad != 0 ? PN_GNSS_FLAG_HAS_VELOCITY : 0u;
             builder.add_gnss(r.line, r.app_s, fix);
         }
-        builder.set_units(kGnss, "deg, m", "deg, m");
+        builder.set_units(stream_gnss, "deg, m", "deg, m");
     }
     if (!posi.empty()) {
         log.truth_origin = {posi.front().lat, posi.front().lon, 0.0, true};
         for (const auto& p : posi) {
             double enu[3];
             geodetic_to_enu(log.truth_origin, p.lat, p.lon, 0.0, enu);
-            TruthPoint point{p.t_s, enu[0], enu[1], 0.0, static_cast<int>(std::lround(p.floor)), false,
+            TruthPoint point{p.t_s,
+                             enu[0],
+                             enu[1],
+                             0.0,
+                             static_cast<int>(std::lround(p.floor)),
+                             false,
                              "POSI " + std::to_string(static_cast<long long>(p.counter))};
             builder.add_truth(p.line, point);
         }
-        builder.set_units(kTruth, "deg", "m (ENU from the first POSI)");
-        std::snprintf(text, sizeof text, "%zu POSI ground-truth points, local ENU metres from lat %.8f lon %.8f",
-                      posi.size(), posi.front().lat, posi.front().lon);
+        builder.set_units(stream_truth, "deg", "m (ENU from the first POSI)");
+        std::snprintf(text, sizeof text,
+                      "%zu POSI ground-truth points, local ENU metres from lat %.8f lon %.8f", posi.size(),
+                      posi.front().lat, posi.front().lon);
         builder.note(text);
     }
     if (!ignored.empty()) {
         std::string list;
-        for (const auto& [tag, count] : ignored) list += (list.empty() ? "" : ", ") + tag + " " + std::to_string(count);
+        for (const auto& [tag, count] : ignored)
+            list += (list.empty() ? "" : ", ") + tag + " " + std::to_string(count);
         builder.note("lines ignored: " + list);
     }
     log.axes = kAndroidAxesText;

@@ -78,23 +78,24 @@ void read_microstrain(const TextFile& file, const ReadOptions&, LogBuilder& buil
 
     if (layout_a) {
         spec.accel.scale = kStandardGravity;
-        builder.set_units(kAccel, "g", "m/s^2");
+        builder.set_units(stream_accel, "g", "m/s^2");
     } else {
-        builder.set_units(kAccel, "m/s^2", "m/s^2");
+        builder.set_units(stream_accel, "m/s^2", "m/s^2");
     }
-    builder.set_units(kGyro, "rad/s", "rad/s");
+    builder.set_units(stream_gyro, "rad/s", "rad/s");
     if (spec.mag.present()) {
         spec.mag.scale = 100.0;  // gauss to microtesla
-        builder.set_units(kMag, "gauss", "uT");
+        builder.set_units(stream_mag, "gauss", "uT");
     }
     spec.pressure_col = find_column(h.channels, "scaledAmbientPressure");
     if (spec.pressure_col >= 0) {
         spec.pressure_scale = 100.0;  // mbar to Pa
-        builder.set_units(kPressure, "mbar", "Pa");
+        builder.set_units(stream_pressure, "mbar", "Pa");
     }
-    log.axes = "3DM-GX5 case axes turned from forward-right-down to forward-left-up: (x, -y, -z); not levelled";
-    builder.note(std::string("MicroStrain SensorConnect layout ") + (layout_a ? "A" : "B") + ": " + accel + " in " +
-                 (layout_a ? "g" : "m/s^2") + ", " + gyro + " in rad/s" +
+    log.axes =
+        "3DM-GX5 case axes turned from forward-right-down to forward-left-up: (x, -y, -z); not levelled";
+    builder.note(std::string("MicroStrain SensorConnect layout ") + (layout_a ? "A" : "B") + ": " + accel +
+                 " in " + (layout_a ? "g" : "m/s^2") + ", " + gyro + " in rad/s" +
                  (spec.valid_cols.empty() ? "" : ", rows with a ':valid' flag of 0 skipped"));
     read_table(file, spec, builder);
 }

@@ -43,7 +43,8 @@ void read_pednav_csv(const TextFile& file, const ReadOptions&, LogBuilder& build
         if (find_column(spec.names, k) < 0) missing += std::string(missing.empty() ? "" : ", ") + k;
     }
     if (!missing.empty()) {
-        throw ReadError(file.path, index + 1, "no accelerometer/gyroscope columns: the header lacks " + missing);
+        throw ReadError(file.path, index + 1,
+                        "no accelerometer/gyroscope columns: the header lacks " + missing);
     }
     const char* axes[3] = {"x", "y", "z"};
     for (int i = 0; i < 3; ++i) {
@@ -53,10 +54,10 @@ void read_pednav_csv(const TextFile& file, const ReadOptions&, LogBuilder& build
     }
     if (!spec.mag.present()) spec.mag = Vec3Spec{};
     spec.pressure_col = find_column(spec.names, "p");
-    builder.set_units(kAccel, "m/s^2", "m/s^2");
-    builder.set_units(kGyro, "rad/s", "rad/s");
-    if (spec.mag.present()) builder.set_units(kMag, "uT", "uT");
-    if (spec.pressure_col >= 0) builder.set_units(kPressure, "Pa", "Pa");
+    builder.set_units(stream_accel, "m/s^2", "m/s^2");
+    builder.set_units(stream_gyro, "rad/s", "rad/s");
+    if (spec.mag.present()) builder.set_units(stream_mag, "uT", "uT");
+    if (spec.pressure_col >= 0) builder.set_units(stream_pressure, "Pa", "Pa");
     log.axes = "body axes as written in the file (FLU expected)";
     std::string cols;
     for (const auto& n : spec.names) cols += (cols.empty() ? "" : ",") + n;

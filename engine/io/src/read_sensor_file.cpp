@@ -1,7 +1,7 @@
 // Format detection and dispatch, merged_records, and the small public helpers.
-#include <algorithm>
 #include <dirent.h>
 #include <sys/stat.h>
+#include <algorithm>
 
 #include "formats.hpp"
 #include "pednav_io/sensor_log.hpp"
@@ -28,20 +28,22 @@ std::string resolve_folder(const std::string& path) {
     std::vector<std::string> candidates;
     while (dirent* entry = readdir(dir)) {
         const std::string name = entry->d_name;
-        if (detail::starts_with(name, "accelerometer") && detail::ends_with(name, ".txt")) candidates.push_back(name);
+        if (detail::starts_with(name, "accelerometer") && detail::ends_with(name, ".txt"))
+            candidates.push_back(name);
     }
     closedir(dir);
     std::sort(candidates.begin(), candidates.end());
     if (candidates.empty()) {
-        throw ReadError(path, 0, "is a folder without a recording (expected accelerometer*.txt and gyroscope*.txt)");
+        throw ReadError(path, 0,
+                        "is a folder without a recording (expected accelerometer*.txt and gyroscope*.txt)");
     }
     // Prefer the calibrated file when both raw and calibrated exist.
     for (const auto& c : candidates) {
         if (c.find("calibrated") != std::string::npos && c.find("uncalibrated") == std::string::npos) {
-            return path + "/" + c;
+            return std::string(path).append("/").append(c);
         }
     }
-    return path + "/" + candidates.front();
+    return std::string(path).append("/").append(candidates.front());
 }
 
 const detail::FormatReader* find_reader(const std::string& name) {
@@ -84,24 +86,28 @@ size_t first_content_line(const TextFile& file) {
 const std::vector<FormatReader>& format_readers() {
     // Detection order: the most specific header first.
     static const std::vector<FormatReader> readers = {
-        {"ipin-logfile", "IPIN competition logfile (ACCE;GYRO;MAGN;PRES;GNSS;POSI lines)", detect_ipin, read_ipin},
+        {"ipin-logfile", "IPIN competition logfile (ACCE;GYRO;MAGN;PRES;GNSS;POSI lines)", detect_ipin,
+         read_ipin},
         {"humolire-senslogs", "senslogs two-file Android log (accelerometer/gyroscope .txt)", detect_humolire,
          read_humolire},
-                        {"microstrain-sensorconnect-a", "MicroStrain SensorConnect CSV, scaled* channels (g, rad/s, gauss)",
+        {"microstrain-sensorconnect-a", "MicroStrain SensorConnect CSV, scaled* channels (g, rad/s, gauss)",
          detect_microstrain_a, read_microstrain},
-        {"microstrain-sensorconnect-b", "MicroStrain SensorConnect CSV, estCompensated* channels (m/s^2, rad/s)",
-         detect_microstrain_b, read_microstrain},
+        {"microstrain-sensorconnect-b",
+         "MicroStrain SensorConnect CSV, estCompensated* channels (m/s^2, rad/s)", detect_microstrain_b,
+         read_microstrain},
         {"xio-ngimu-csv", "x-io NGIMU / x-IMU CSV (\"Time (s)\", deg/s, g)", detect_xio_csv, read_xio_csv},
-        {"xsens-mtw-tsv", "Xsens tab-separated export (PacketCounter, Acc_X, ...)", detect_xsens_mtw_tsv, read_xsens},
+        {"xsens-mtw-tsv", "Xsens tab-separated export (PacketCounter, Acc_X, ...)", detect_xsens_mtw_tsv,
+         read_xsens},
         {"xsens-mtmanager-csv", "Xsens MT Manager CSV export (PacketCounter, SampleTimeFine, Acc_X, ...)",
          detect_xsens_mtmanager_csv, read_xsens},
-                {"xsens-converted-g-csv", "Xsens export converted to time,gx..,ax.. in g, p in hPa (biba mapmatching_run)",
+        {"xsens-converted-g-csv",
+         "Xsens export converted to time,gx..,ax.. in g, p in hPa (biba mapmatching_run)",
          detect_biba_converted_csv, read_biba_converted_csv},
         {"pednav-csv", "canonical CSV t,ax,ay,az,gx,gy,gz[,mx,my,mz][,p] in s, m/s^2, rad/s, uT, Pa",
          detect_pednav_csv, read_pednav_csv},
         {"column-map", "any delimited file described by a column map (ReadOptions::column_map)", nullptr,
          read_column_map},
-            };
+    };
     return readers;
 }
 
@@ -169,8 +175,9 @@ std::vector<const pn_record_header_t*> merged_records(const SensorLog& log) {
     for (const auto& r : log.gnss) out.push_back(&r.header);
     // Each stream is already in time order and they were appended IMU, MAG,
     // BARO, GNSS: a stable sort on time keeps that order at equal t_ns.
-    std::stable_sort(out.begin(), out.end(),
-                     [](const pn_record_header_t* a, const pn_record_header_t* b) { return a->t_ns < b->t_ns; });
+    std::stable_sort(out.begin(), out.end(), [](const pn_record_header_t* a, const pn_record_header_t* b) {
+        return a->t_ns < b->t_ns;
+    });
     return out;
 }
 

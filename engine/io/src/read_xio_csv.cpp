@@ -66,8 +66,9 @@ void read_xio_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder,
                         "use format column-map with time.rate_hz)");
     }
     if (cols[static_cast<size_t>(spec.time_col)].unit != "s") {
-        throw ReadError(file.path, index + 1, "x-io CSV time unit '" + cols[static_cast<size_t>(spec.time_col)].unit +
-                                                  "' is not supported (expected s)");
+        throw ReadError(file.path, index + 1,
+                        "x-io CSV time unit '" + cols[static_cast<size_t>(spec.time_col)].unit +
+                            "' is not supported (expected s)");
     }
     const char* axes[3] = {" x", " y", " z"};
     for (int i = 0; i < 3; ++i) {
@@ -90,8 +91,8 @@ void read_xio_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder,
     } else if (g_unit != "rad/s") {
         throw ReadError(file.path, index + 1, "unknown gyroscope unit '" + g_unit + "'");
     }
-    builder.set_units(kAccel, a_unit, "m/s^2");
-    builder.set_units(kGyro, g_unit, "rad/s");
+    builder.set_units(stream_accel, a_unit, "m/s^2");
+    builder.set_units(stream_gyro, g_unit, "rad/s");
     if (spec.mag.present()) {
         const std::string m_unit = cols[static_cast<size_t>(spec.mag.col[0])].unit;
         if (m_unit == "G" || m_unit == "gauss") {
@@ -102,7 +103,7 @@ void read_xio_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder,
             builder.issue(index + 1, "magnetometer unit '" + m_unit + "' unknown: magnetometer ignored");
             spec.mag = Vec3Spec{};
         }
-        if (spec.mag.present()) builder.set_units(kMag, m_unit, "uT");
+        if (spec.mag.present()) builder.set_units(stream_mag, m_unit, "uT");
     } else {
         spec.mag = Vec3Spec{};
     }
@@ -111,7 +112,7 @@ void read_xio_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder,
         const std::string p_unit = cols[static_cast<size_t>(spec.pressure_col)].unit;
         if (p_unit == "hPa") {
             spec.pressure_scale = 100.0;
-            builder.set_units(kPressure, p_unit, "Pa");
+            builder.set_units(stream_pressure, p_unit, "Pa");
         } else {
             builder.issue(index + 1, "barometer unit '" + p_unit + "' unknown: pressure ignored");
             spec.pressure_col = -1;

@@ -68,7 +68,8 @@ bool detect_xsens_mtmanager_csv(const TextFile& file) {
 
 void read_xsens(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
     XsensHeader h;
-    if (!find_header(file, &h)) throw ReadError(file.path, 0, "no Xsens header (PacketCounter, Acc_X, ...) found");
+    if (!find_header(file, &h))
+        throw ReadError(file.path, 0, "no Xsens header (PacketCounter, Acc_X, ...) found");
     TableSpec spec;
     spec.delim = h.delim;
     spec.names = h.names;
@@ -84,11 +85,12 @@ void read_xsens(const TextFile& file, const ReadOptions&, LogBuilder& builder, S
         spec.counter_wrap = 4294967296.0;
         builder.note("time from SampleTimeFine (100 us ticks)");
     } else if (counter >= 0 && h.rate_hz > 0) {
-        spec.time_kind = TableSpec::TimeKind::kCounter;
+        spec.time_kind = TableSpec::TimeKind::counter;
         spec.time_col = counter;
         spec.counter_rate_hz = h.rate_hz;
         spec.counter_wrap = 65536.0;
-        std::snprintf(text, sizeof text, "time from PacketCounter / %.6g Hz (rate from the file's preamble)", h.rate_hz);
+        std::snprintf(text, sizeof text, "time from PacketCounter / %.6g Hz (rate from the file's preamble)",
+                      h.rate_hz);
         builder.note(text);
     } else {
         throw ReadError(file.path, h.index + 1,
@@ -104,20 +106,21 @@ void read_xsens(const TextFile& file, const ReadOptions&, LogBuilder& builder, S
     if (!spec.accel.present() || !spec.gyro.present()) {
         throw ReadError(file.path, h.index + 1, "no complete Acc_X/Y/Z and Gyr_X/Y/Z columns");
     }
-    builder.set_units(kAccel, "m/s^2", "m/s^2");
-    builder.set_units(kGyro, "rad/s", "rad/s");
+    builder.set_units(stream_accel, "m/s^2", "m/s^2");
+    builder.set_units(stream_gyro, "rad/s", "rad/s");
     if (spec.mag.present()) {
         spec.mag.scale = kXsensMagFieldUt;
-        builder.set_units(kMag, "normalised a.u.", "uT");
-        std::snprintf(text, sizeof text,
-                      "magnetometer in Xsens normalised units (1 = field at calibration) scaled by a nominal %.0f uT",
-                      kXsensMagFieldUt);
+        builder.set_units(stream_mag, "normalised a.u.", "uT");
+        std::snprintf(
+            text, sizeof text,
+            "magnetometer in Xsens normalised units (1 = field at calibration) scaled by a nominal %.0f uT",
+            kXsensMagFieldUt);
         builder.note(text);
     } else {
         spec.mag = Vec3Spec{};
     }
     spec.pressure_col = find_column(h.names, "Pressure");
-    if (spec.pressure_col >= 0) builder.set_units(kPressure, "Pa", "Pa");
+    if (spec.pressure_col >= 0) builder.set_units(stream_pressure, "Pa", "Pa");
     spec.temperature_col = find_column(h.names, "Temperature");
     log.axes = "Xsens sensor frame x, y, z (right-handed, as on the case), not levelled";
     read_table(file, spec, builder);

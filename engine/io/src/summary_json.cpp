@@ -32,11 +32,12 @@ nlohmann::json sensor_log_json(const SensorLog& log) {
     return {{"path", log.path},
             {"format", log.format},
             {"axes", log.axes},
-            {"records", {{"imu", log.imu.size()},
-                         {"mag", log.mag.size()},
-                         {"baro", log.baro.size()},
-                         {"gnss", log.gnss.size()},
-                         {"truth", log.truth.size()}}},
+            {"records",
+             {{"imu", log.imu.size()},
+              {"mag", log.mag.size()},
+              {"baro", log.baro.size()},
+              {"gnss", log.gnss.size()},
+              {"truth", log.truth.size()}}},
             {"streams", streams},
             {"truth_origin", truth_origin},
             {"issues", issues},
@@ -45,7 +46,8 @@ nlohmann::json sensor_log_json(const SensorLog& log) {
 }
 
 nlohmann::json run_summary_json(const SensorLog& input, const std::string& describe_json,
-                                const std::vector<pn_position_t>& positions, const std::vector<pn_stride_t>& strides,
+                                const std::vector<pn_position_t>& positions,
+                                const std::vector<pn_stride_t>& strides,
                                 const std::vector<std::string>& warnings) {
     using nlohmann::json;
     json describe = describe_json.empty() ? json(nullptr) : json::parse(describe_json, nullptr, false);
@@ -75,7 +77,10 @@ nlohmann::json run_summary_json(const SensorLog& input, const std::string& descr
         {"engine", describe.is_object() && describe.contains("engine") ? describe["engine"] : json(nullptr)},
         {"pipeline", describe.is_object() && describe.contains("pipeline") ? describe["pipeline"] : describe},
         {"samples",
-         {{"imu", input.imu.size()}, {"mag", input.mag.size()}, {"baro", input.baro.size()}, {"gnss", input.gnss.size()}}},
+         {{"imu", input.imu.size()},
+          {"mag", input.mag.size()},
+          {"baro", input.baro.size()},
+          {"gnss", input.gnss.size()}}},
         {"positions", positions.size()},
         {"steps", strides.size()},
         {"distance_m", track_length_m},

@@ -23,11 +23,11 @@ struct Vec3Spec {
 
 struct TableSpec {
     char delim = ',';
-    size_t first_data_index = 1;  // 0-based index in TextFile::lines of the first data row
-    size_t column_count = 0;      // fields expected per row
+    size_t first_data_index = 1;     // 0-based index in TextFile::lines of the first data row
+    size_t column_count = 0;         // fields expected per row
     std::vector<std::string> names;  // column names, for messages
 
-    enum class TimeKind { kSeconds, kCounter } time_kind = TimeKind::kSeconds;
+    enum class TimeKind { seconds, counter } time_kind = TimeKind::seconds;
     int time_col = -1;
     double time_scale = 1.0;     // kSeconds: file unit to s
     double counter_rate_hz = 0;  // kCounter: t = counter / rate

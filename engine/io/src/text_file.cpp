@@ -1,11 +1,11 @@
 #include "text_file.hpp"
 
+#include <sys/stat.h>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
-#include <sys/stat.h>
 
 #include "pednav_io/sensor_log.hpp"
 
@@ -33,7 +33,8 @@ TextFile load_text_file(const std::string& path) {
         if (c == 0) throw ReadError(path, 0, "binary file (contains NUL bytes), not a text recording");
         if (c < 32 && c != '\t' && c != '\r' && c != '\n') ++control;
     }
-    if (control * 20 > probe) throw ReadError(path, 0, "binary file (control characters), not a text recording");
+    if (control * 20 > probe)
+        throw ReadError(path, 0, "binary file (control characters), not a text recording");
 
     std::string_view all(file.data);
     size_t start = 0;
@@ -96,26 +97,27 @@ std::vector<std::string_view> split(std::string_view line, char delim) {
 
 NumberStatus parse_number(std::string_view field, double* value) {
     field = trim(field);
-    if (field.empty()) return NumberStatus::kEmpty;
+    if (field.empty()) return NumberStatus::empty;
     if (field.front() == '+') field.remove_prefix(1);
     double v = 0.0;
     const char* first = field.data();
     const char* last = field.data() + field.size();
     auto result = std::from_chars(first, last, v);
     if (result.ec != std::errc() || result.ptr != last) {
-        if (result.ec == std::errc::result_out_of_range && result.ptr == last) return NumberStatus::kNonFinite;
-        return NumberStatus::kNotANumber;
+        if (result.ec == std::errc::result_out_of_range && result.ptr == last)
+            return NumberStatus::non_finite;
+        return NumberStatus::not_a_number;
     }
     *value = v;
-    if (!std::isfinite(v)) return NumberStatus::kNonFinite;
-    return NumberStatus::kOk;
+    if (!std::isfinite(v)) return NumberStatus::non_finite;
+    return NumberStatus::ok;
 }
 
 std::string describe_bad_number(NumberStatus status, std::string_view field, std::string_view column) {
     std::string text;
     switch (status) {
-        case NumberStatus::kEmpty: text = "empty value"; break;
-        case NumberStatus::kNonFinite: text = "non-finite value '" + std::string(trim(field)) + "'"; break;
+        case NumberStatus::empty: text = "empty value"; break;
+        case NumberStatus::non_finite: text = "non-finite value '" + std::string(trim(field)) + "'"; break;
         default: text = "not a number: '" + std::string(trim(field).substr(0, 40)) + "'"; break;
     }
     if (!column.empty()) text += " in column " + std::string(column);

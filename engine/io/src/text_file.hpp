@@ -23,7 +23,7 @@ std::string_view trim(std::string_view s);
 std::vector<std::string_view> split(std::string_view line, char delim);
 void split_into(std::string_view line, char delim, std::vector<std::string_view>& out);
 
-enum class NumberStatus { kOk, kEmpty, kNotANumber, kNonFinite };
+enum class NumberStatus { ok, empty, not_a_number, non_finite };
 
 // Parses the whole trimmed field as a double (locale-independent).
 NumberStatus parse_number(std::string_view field, double* value);

@@ -58,7 +58,8 @@ bool has_floor(const pn_position_t& p) { return (p.header.flags & PN_POSITION_FL
 std::vector<size_t> thinned(const std::vector<pn_position_t>& positions) {
     std::vector<size_t> keep;
     for (size_t i = 0; i < positions.size(); ++i) {
-        const bool floor_changed = i > 0 && has_floor(positions[i]) && positions[i].floor != positions[i - 1].floor;
+        const bool floor_changed =
+            i > 0 && has_floor(positions[i]) && positions[i].floor != positions[i - 1].floor;
         if (keep.empty() || i + 1 == positions.size() || floor_changed ||
             positions[i].header.t_ns - positions[keep.back()].header.t_ns >= kThinInterval_ns) {
             keep.push_back(i);
@@ -72,8 +73,10 @@ size_t position_at(const std::vector<pn_position_t>& positions, int64_t t_ns) {
     size_t lo = 0, hi = positions.size();
     while (lo < hi) {
         const size_t mid = (lo + hi) / 2;
-        if (positions[mid].header.t_ns <= t_ns) lo = mid + 1;
-        else hi = mid;
+        if (positions[mid].header.t_ns <= t_ns)
+            lo = mid + 1;
+        else
+            hi = mid;
     }
     return lo == 0 ? 0 : lo - 1;
 }
@@ -105,17 +108,18 @@ void write_track_csv(const std::string& path, const std::vector<pn_position_t>& 
         char floor[16] = "";
         if (has_floor(p)) std::snprintf(floor, sizeof floor, "%d", p.floor);
         std::fprintf(out.get(), "%.9f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n",
-                     static_cast<double>(p.header.t_ns) * 1e-9, p.pos_enu_m[0], p.pos_enu_m[1], p.pos_enu_m[2],
-                     heading_deg(p.heading_rad), floor, p.cov_enu_m2[0], p.cov_enu_m2[1], p.cov_enu_m2[4],
-                     p.cov_enu_m2[8]);
+                     static_cast<double>(p.header.t_ns) * 1e-9, p.pos_enu_m[0], p.pos_enu_m[1],
+                     p.pos_enu_m[2], heading_deg(p.heading_rad), floor, p.cov_enu_m2[0], p.cov_enu_m2[1],
+                     p.cov_enu_m2[4], p.cov_enu_m2[8]);
     }
     out.close();
 }
 
 void write_steps_csv(const std::string& path, const std::vector<pn_stride_t>& strides) {
     OutFile out(path);
-    std::fprintf(out.get(),
-                 "index,t_start,t_end,dx,dy,dz,length_m,heading_change_deg,class,cov_xx,cov_xy,cov_yy,cov_zz\n");
+    std::fprintf(
+        out.get(),
+        "index,t_start,t_end,dx,dy,dz,length_m,heading_change_deg,class,cov_xx,cov_xy,cov_yy,cov_zz\n");
     for (const auto& s : strides) {
         std::fprintf(out.get(), "%d,%.9f,%.9f,%.6f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n", s.index,
                      static_cast<double>(s.t_start_ns) * 1e-9, static_cast<double>(s.header.t_ns) * 1e-9,
@@ -148,36 +152,39 @@ void write_geojson(const std::string& path, const std::vector<pn_position_t>& po
     for (const auto& s : strides) {
         if (positions.empty()) break;
         const pn_position_t& p = positions[position_at(positions, s.header.t_ns)];
-        features.push_back({{"type", "Feature"},
-                            {"geometry", {{"type", "Point"}, {"coordinates", coordinates(p.pos_enu_m, origin)}}},
-                            {"properties",
-                             {{"kind", "step"},
-                              {"index", s.index},
-                              {"t_s", static_cast<double>(s.header.t_ns) * 1e-9},
-                              {"t_start_s", static_cast<double>(s.t_start_ns) * 1e-9},
-                              {"length_m", s.length_m},
-                              {"heading_change_deg", s.heading_change_rad * kRadToDeg},
-                              {"class", class_name(s.stride_class)}}}});
+        features.push_back(
+            {{"type", "Feature"},
+             {"geometry", {{"type", "Point"}, {"coordinates", coordinates(p.pos_enu_m, origin)}}},
+             {"properties",
+              {{"kind", "step"},
+               {"index", s.index},
+               {"t_s", static_cast<double>(s.header.t_ns) * 1e-9},
+               {"t_start_s", static_cast<double>(s.t_start_ns) * 1e-9},
+               {"length_m", s.length_m},
+               {"heading_change_deg", s.heading_change_rad * kRadToDeg},
+               {"class", class_name(s.stride_class)}}}});
     }
     bool have_floor = false;
     int32_t last_floor = 0;
     for (const auto& p : positions) {
         if (!has_floor(p)) continue;
         if (have_floor && p.floor != last_floor) {
-            features.push_back({{"type", "Feature"},
-                                {"geometry", {{"type", "Point"}, {"coordinates", coordinates(p.pos_enu_m, origin)}}},
-                                {"properties",
-                                 {{"kind", "floor_change"},
-                                  {"t_s", static_cast<double>(p.header.t_ns) * 1e-9},
-                                  {"from_floor", last_floor},
-                                  {"to_floor", p.floor}}}});
+            features.push_back(
+                {{"type", "Feature"},
+                 {"geometry", {{"type", "Point"}, {"coordinates", coordinates(p.pos_enu_m, origin)}}},
+                 {"properties",
+                  {{"kind", "floor_change"},
+                   {"t_s", static_cast<double>(p.header.t_ns) * 1e-9},
+                   {"from_floor", last_floor},
+                   {"to_floor", p.floor}}}});
         }
         have_floor = true;
         last_floor = p.floor;
     }
     json doc = {{"type", "FeatureCollection"}, {"features", features}};
     if (origin.known) {
-        doc["pednav_origin"] = {{"lat_deg", origin.lat_deg}, {"lon_deg", origin.lon_deg}, {"height_m", origin.height_m}};
+        doc["pednav_origin"] = {
+            {"lat_deg", origin.lat_deg}, {"lon_deg", origin.lon_deg}, {"height_m", origin.height_m}};
     } else {
         // Not WGS-84: coordinates are east, north, up metres from the start point.
         doc["crs_local_enu_m"] = true;
@@ -197,8 +204,8 @@ void write_gpx(const std::string& path, const std::vector<pn_position_t>& positi
                  "<gpx version=\"1.1\" creator=\"pednav\" xmlns=\"http://www.topografix.com/GPX/1/1\">\n"
                  "  <metadata>\n    <name>pednav track</name>\n");
     if (origin.known) {
-        std::fprintf(f, "    <desc>pedestrian dead-reckoning track from lat %.9f lon %.9f</desc>\n", origin.lat_deg,
-                     origin.lon_deg);
+        std::fprintf(f, "    <desc>pedestrian dead-reckoning track from lat %.9f lon %.9f</desc>\n",
+                     origin.lat_deg, origin.lon_deg);
     } else {
         std::fprintf(f,
                      "    <desc>start point unknown: the track is placed at latitude 0, longitude 0 "

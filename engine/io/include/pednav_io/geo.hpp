@@ -16,6 +16,7 @@ struct Origin {
 // Latitude/longitude/height to east/north/up metres from `origin`.
 void geodetic_to_enu(const Origin& origin, double lat_deg, double lon_deg, double height_m, double enu_m[3]);
 // The inverse of geodetic_to_enu.
-void enu_to_geodetic(const Origin& origin, const double enu_m[3], double* lat_deg, double* lon_deg, double* height_m);
+void enu_to_geodetic(const Origin& origin, const double enu_m[3], double* lat_deg, double* lon_deg,
+                     double* height_m);
 
 }  // namespace pednav::io

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
 #include <pednav/pn_types.h>
+#include <nlohmann/json_fwd.hpp>
 
 #include "pednav_io/geo.hpp"
 
@@ -26,16 +26,16 @@ struct ReadIssue {
 // One stream of the file: "accel", "gyro", "mag", "pressure", "gnss", "truth".
 struct StreamInfo {
     std::string name;
-    size_t count = 0;          // samples kept
-    double rate_hz = 0.0;      // mean rate: (count - 1) / duration_s
+    size_t count = 0;             // samples kept
+    double rate_hz = 0.0;         // mean rate: (count - 1) / duration_s
     double median_rate_hz = 0.0;  // 1 / median interval: the sensor's own rate when samples were lost
-    double duration_s = 0.0;   // last sample time - first sample time
-    double t_first_s = 0.0;    // time of the first sample kept (file's own time origin)
-    double t_last_s = 0.0;     // time of the last sample kept
-    std::string units_found;   // unit in the file, e.g. "g", "deg/s", "gauss", "hPa"
+    double duration_s = 0.0;      // last sample time - first sample time
+    double t_first_s = 0.0;       // time of the first sample kept (file's own time origin)
+    double t_last_s = 0.0;        // time of the last sample kept
+    std::string units_found;      // unit in the file, e.g. "g", "deg/s", "gauss", "hPa"
     std::string units_converted;  // unit handed to the engine, e.g. "m/s^2"
-    size_t gaps = 0;           // intervals longer than ReadOptions::gap_s
-    size_t bad_rows = 0;       // rows or samples of this stream skipped
+    size_t gaps = 0;              // intervals longer than ReadOptions::gap_s
+    size_t bad_rows = 0;          // rows or samples of this stream skipped
 };
 
 // A ground-truth point read from the file (e.g. IPIN POSI). Lat/lon points are
@@ -57,20 +57,20 @@ struct SensorLog {
     std::vector<pn_gnss_t> gnss;
     std::vector<TruthPoint> truth;
     std::vector<StreamInfo> streams;
-    std::vector<ReadIssue> issues;    // bad rows, gaps, duplicates, unit notes; reading continued past them
-    std::vector<std::string> notes;   // what was detected: format, rate, units, columns, axes
-    Origin truth_origin;              // origin of the truth points when they came as lat/lon
-    std::string axes;                 // the body axes of the records, e.g. "sensor x,y,z (NGIMU case)"
-    size_t issues_not_listed = 0;     // issues counted but not kept in `issues` (cap per file)
+    std::vector<ReadIssue> issues;   // bad rows, gaps, duplicates, unit notes; reading continued past them
+    std::vector<std::string> notes;  // what was detected: format, rate, units, columns, axes
+    Origin truth_origin;             // origin of the truth points when they came as lat/lon
+    std::string axes;                // the body axes of the records, e.g. "sensor x,y,z (NGIMU case)"
+    size_t issues_not_listed = 0;    // issues counted but not kept in `issues` (cap per file)
 
     const StreamInfo* stream(const std::string& name) const;
 };
 
 struct ReadOptions {
-    std::string format = "auto";             // a name from supported_formats(), or "auto"
+    std::string format = "auto";                 // a name from supported_formats(), or "auto"
     const nlohmann::json* column_map = nullptr;  // for format "column-map" (see docs/formats.md)
-    double gap_s = 1.0;                      // intervals longer than this are reported as gaps
-    size_t max_issues = 200;                 // issues kept in SensorLog::issues; the rest are counted
+    double gap_s = 1.0;                          // intervals longer than this are reported as gaps
+    size_t max_issues = 200;                     // issues kept in SensorLog::issues; the rest are counted
 };
 
 // Fatal: missing, empty, binary or unrecognised file, or no accelerometer and

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <pednav/pn_types.h>
+#include <nlohmann/json.hpp>
 
 #include "pednav_io/geo.hpp"
 #include "pednav_io/sensor_log.hpp"
