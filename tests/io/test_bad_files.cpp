@@ -125,7 +125,16 @@ TEST_CASE("fatal: missing, empty, binary, unknown, no accelerometer/gyroscope co
           std::string::npos);
     const std::string only_bad =
         error_of(write_file(dir, "allbad.csv", "t,ax,ay,az,gx,gy,gz\n0,x,0,0,0,0,0\n"));
-    CHECK(only_bad.find("no accelerometer and gyroscope sample could be read") != std::string::npos);
+    CHECK(only_bad.find(
+              "no accelerometer and gyroscope sample could be read (first problem: line 2: row skipped: "
+              "not a number: 'x' in column ax)") != std::string::npos);
+    CHECK(error_of(write_file(dir, "utf16.csv", std::string("\xff\xfet\0,\0", 6))).find("UTF-16") !=
+          std::string::npos);
+    // A UTF-8 byte order mark (Windows exports) is skipped.
+    const SensorLog bom =
+        read_sensor_file(write_file(dir, "bom.csv", "\xef\xbb\xbft,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n"));
+    CHECK(bom.format == "pednav-csv");
+    CHECK(bom.imu.size() == 1);
     try {
         read_sensor_file(dir + "/nope.csv");
         FAIL("no exception");

@@ -274,7 +274,12 @@ void LogBuilder::finish() {
     context_.clear();
     pair_accel_gyro();
     if (log_.imu.empty()) {
-        throw ReadError(log_.path, 0, "no accelerometer and gyroscope sample could be read");
+        std::string reason = "no accelerometer and gyroscope sample could be read";
+        if (!log_.issues.empty()) {
+            reason += " (first problem: line " + std::to_string(log_.issues.front().line) + ": " +
+                      log_.issues.front().message + ")";
+        }
+        throw ReadError(log_.path, 0, reason);
     }
     for (const auto& [name, d] : duplicates_) {
         char text[200];

@@ -23,6 +23,11 @@ TextFile load_text_file(const std::string& path) {
     file.path = path;
     file.data = buffer.str();
     if (file.data.empty()) throw ReadError(path, 0, "the file is empty");
+    if (file.data.size() >= 2 && ((file.data[0] == '\xff' && file.data[1] == '\xfe') ||
+                                  (file.data[0] == '\xfe' && file.data[1] == '\xff'))) {
+        throw ReadError(path, 0, "UTF-16 text: save the file as UTF-8 or ASCII");
+    }
+    if (file.data.compare(0, 3, "\xef\xbb\xbf") == 0) file.data.erase(0, 3);  // UTF-8 byte order mark
 
     // Binary check on the first 64 KiB: any NUL byte, or more than 5 % control
     // characters other than tab, CR, LF.
