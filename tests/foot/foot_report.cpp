@@ -14,6 +14,25 @@ int main(int argc, char** argv) {
     const std::string cfg = foot_config(patch, 0.0);
     const bool quick = argc > 3 && std::string(argv[3]) == "quick";  // real foot recordings only
     try {
+        if (argc > 3 && std::string(argv[3]) == "tables") {
+            // The paper's tables: |dx|, |dy| at the footprints, ZUPT only vs ZUPT + ZARU.
+            for (bool zaru : {false, true}) {
+                nlohmann::json p2 = patch;
+                p2.merge_patch(ekf_patch({{"zaru", zaru}}));
+                const std::string c2 = foot_config(p2, 0.0);
+                std::printf("%s\n", zaru ? "ZUPT + ZARU" : "ZUPT only");
+                for (int n : {33, 35, 39, 42, 44}) {
+                    const KorogluScore s = score_koroglu(n, c2);
+                    std::vector<double> ax, ay;
+                    for (double v : s.dx) ax.push_back(std::abs(v) * 100);
+                    for (double v : s.dy) ay.push_back(std::abs(v) * 100);
+                    const Stats x = stats_of(ax), y = stats_of(ay);
+                    std::printf("  %d dx cm min %.0f max %.0f mean %.0f sd %.0f | dy cm min %.0f max %.0f mean %.0f sd %.0f | mean err %.2f %%\n",
+                                n, x.min, x.max, x.mean, x.sd, y.min, y.max, y.mean, y.sd, s.mean_pct);
+                }
+            }
+            return 0;
+        }
         std::printf("detector %s\n", det.c_str());
         for (const char* route : {"corridor_loop", "stairs"}) {
             if (quick) break;
