@@ -13,10 +13,12 @@ namespace {
 const char* kUsage =
     "usage: pednav sim --route FILE|NAME --out DIR [--mount foot|chest|waist] [--rate HZ] [--seed N]\n"
     "                  [--no-errors] [--mounting ROLL,PITCH,YAW] [--no-mag] [--no-baro] [--no-gnss]\n"
+    "                  [--mag-rate HZ] [--baro-rate HZ]\n"
     "       pednav sim --list\n"
     "  --route     a route JSON file (pednav-route/1) or a built-in route name\n"
     "  --mounting  sensor axes in the foot/body frame, degrees (default 0,0,0)\n"
-    "  --no-errors exact sensors: no noise, bias, scale factor, saturation or drift\n";
+    "  --no-errors exact sensors: no noise, bias, scale factor, saturation or drift\n"
+    "  --mag-rate, --baro-rate  on a subset of the IMU samples (default: every sample)\n";
 
 double to_number(const std::string& s, const std::string& option) {
     char* end = nullptr;
@@ -56,6 +58,10 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
                 options.with_baro = false;
             else if (a == "--no-gnss")
                 options.with_gnss = false;
+            else if (a == "--mag-rate")
+                options.mag_rate_hz = to_number(value(), a);
+            else if (a == "--baro-rate")
+                options.baro_rate_hz = to_number(value(), a);
             else if (a == "--mounting") {
                 std::stringstream ss(value());
                 std::string part;

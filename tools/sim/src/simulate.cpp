@@ -116,8 +116,14 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
     const size_t n = static_cast<size_t>(std::floor(plan.end_s * options.rate_hz)) + 1;
     out.imu.reserve(n);
     out.truth.reserve(n);
-    if (options.with_mag) out.mag.reserve(n);
-    if (options.with_baro) out.baro.reserve(n);
+    // Magnetometer and barometer on a subset of the IMU samples (same clock).
+    auto every = [&](double hz) {
+        return hz > 0.0 ? std::max<size_t>(1, static_cast<size_t>(std::llround(options.rate_hz / hz)))
+                        : size_t{1};
+    };
+    const size_t mag_every = every(options.mag_rate_hz), baro_every = every(options.baro_rate_hz);
+    if (options.with_mag) out.mag.reserve(n / mag_every + 1);
+    if (options.with_baro) out.baro.reserve(n / baro_every + 1);
 
     // GNSS: one fix every 1/gnss_rate s on outdoor segments, error = Gauss-Markov + white.
     const double gnss_period_s = 1.0 / options.gnss_rate_hz;
@@ -169,7 +175,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
         ts.heading_deg = heading;
         out.truth.push_back(ts);
 
-        if (options.with_mag) {
+        if (options.with_mag && k % mag_every == 0) {
             auto m = make_record<pn_mag_t>(PN_REC_MAG, t_ns);
             const Eigen::Vector3d b_enu = b_earth + disturbance_enu(route, s.p_enu_m);
             Eigen::Vector3d b = R_enu_sensor.transpose() * b_enu;
@@ -179,7 +185,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
             for (int i = 0; i < 3; ++i) m.mag_ut[i] = b[i];
             out.mag.push_back(m);
         }
-        if (options.with_baro) {
+        if (options.with_baro && k % baro_every == 0) {
             auto b = make_record<pn_baro_t>(PN_REC_BARO, t_ns);
             b.pressure_pa = standard_pressure_pa(route.origin_height_m + s.p_enu_m.z()) + baro_drift * t;
             if (err) b.pressure_pa += options.baro_noise_pa * rng_baro.normal();

@@ -43,8 +43,11 @@ nlohmann::json lonlat(const GeoOrigin& o, double x, double y, double z) {
 
 void write_outputs(const SimOutput& out, const Route& route, const std::string& out_dir) {
     make_dirs(out_dir);
-    const bool mag = out.mag.size() == out.imu.size() && !out.mag.empty();
-    const bool baro = out.baro.size() == out.imu.size() && !out.baro.empty();
+    // Magnetometer and barometer samples share the IMU's sample times; a row
+    // without one leaves its cells empty (multi-rate canonical CSV).
+    const bool mag = !out.mag.empty();
+    const bool baro = !out.baro.empty();
+    size_t im = 0, ib = 0;
 
     std::FILE* f = open_or_throw(out_dir + "/input.csv");
     std::fprintf(f, "# pednav simulated walk: route %s, mount %s, %.6g Hz\n", route.name.c_str(),
@@ -55,10 +58,23 @@ void write_outputs(const SimOutput& out, const Route& route, const std::string& 
         std::fprintf(f, "%.9f,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", static_cast<double>(m.header.t_ns) * 1e-9,
                      m.accel_mps2[0], m.accel_mps2[1], m.accel_mps2[2], m.gyro_radps[0], m.gyro_radps[1],
                      m.gyro_radps[2]);
-        if (mag)
-            std::fprintf(f, ",%.8g,%.8g,%.8g", out.mag[k].mag_ut[0], out.mag[k].mag_ut[1],
-                         out.mag[k].mag_ut[2]);
-        if (baro) std::fprintf(f, ",%.10g", out.baro[k].pressure_pa);
+        if (mag) {
+            if (im < out.mag.size() && out.mag[im].header.t_ns == m.header.t_ns) {
+                std::fprintf(f, ",%.8g,%.8g,%.8g", out.mag[im].mag_ut[0], out.mag[im].mag_ut[1],
+                             out.mag[im].mag_ut[2]);
+                ++im;
+            } else {
+                std::fputs(",,,", f);
+            }
+        }
+        if (baro) {
+            if (ib < out.baro.size() && out.baro[ib].header.t_ns == m.header.t_ns) {
+                std::fprintf(f, ",%.10g", out.baro[ib].pressure_pa);
+                ++ib;
+            } else {
+                std::fputc(',', f);
+            }
+        }
         std::fputc('\n', f);
     }
     std::fclose(f);

@@ -40,7 +40,10 @@ struct SimOptions {
                                   0.0};  // sensor axes in the foot/body frame: R = Rz(yaw) Ry(pitch) Rx(roll)
     bool with_mag = true;
     bool with_baro = true;
-    bool with_gnss = true;          // fixes only on outdoor segments
+    bool with_gnss = true;  // fixes only on outdoor segments
+    double mag_rate_hz =
+        0.0;  // 0: with every IMU sample; else on every round(rate_hz / mag_rate_hz)-th sample
+    double baro_rate_hz = 0.0;      // likewise
     double gravity_mps2 = 9.80665;  // |g|, constant over the walk
     double earth_field_ut = 48.0;   // total intensity of the Earth field
     double inclination_deg = 64.0;  // dip, positive: field points down
