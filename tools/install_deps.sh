@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian packages pednav needs, only those that are missing.
+#   tools/install_deps.sh [--java] [extra packages...]
+# --java adds the JDK and JUnit 5 for the optional Java binding (bindings/java).
 set -euo pipefail
 packages=(build-essential cmake pkg-config libeigen3-dev nlohmann-json3-dev doctest-dev valgrind)
+extra=()
+for a in "$@"; do
+  if [ "$a" = "--java" ]; then packages+=(default-jdk junit5); else extra+=("$a"); fi
+done
 missing=()
-for p in "${packages[@]}" "$@"; do
+for p in "${packages[@]}" "${extra[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
