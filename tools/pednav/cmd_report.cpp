@@ -234,6 +234,23 @@ std::string markdown(const std::vector<Result>& results, uint64_t seed) {
               " / " + (m.truth_step_count >= 0 ? std::to_string(m.truth_step_count) : "-") + " | " +
               (legs.empty() ? "-" : legs) + " |\n";
     }
+    // The papers' per-axis table and the remaining metrics, for the walks with checkpoints.
+    md +=
+        "\n## Per-axis differences, IPIN score, heading, height, floors\n\n"
+        "| mount | walk | dx min | dx max | dx mean | dx SD | dy min | dy max | dy mean | dy SD | IPIN score "
+        "(m) | "
+        "heading error mean / max (deg) | height error SD (m) | floor correct (%) |\n"
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const Result& r : results) {
+        const eval::Metrics& m = r.metrics;
+        if (m.checkpoints == 0) continue;
+        md += "| " + r.walk.mount + " | " + r.walk.name + " | " + f(m.dx_m.min) + " | " + f(m.dx_m.max) +
+              " | " + f(m.dx_m.mean) + " | " + f(m.dx_m.sd) + " | " + f(m.dy_m.min) + " | " + f(m.dy_m.max) +
+              " | " + f(m.dy_m.mean) + " | " + f(m.dy_m.sd) + " | " + f(m.ipin_score_m) + " | " +
+              (m.heading_error_deg.n ? f(m.heading_error_deg.mean, 1) + " / " + f(m.heading_error_deg.max, 1)
+                                     : "-") +
+              " | " + f(m.height_error_sd_m) + " | " + f(m.floor_correct_pct, 1) + " |\n";
+    }
     // Percentiles across walks, per mount.
     std::map<std::string, std::map<std::string, std::vector<double>>> by_mount;
     for (const Result& r : results) {
@@ -242,6 +259,11 @@ std::string markdown(const std::vector<Result>& results, uint64_t seed) {
         if (std::isfinite(m.horizontal_m.mean)) v["mean horizontal error (m)"].push_back(m.horizontal_m.mean);
         if (std::isfinite(m.horizontal_m.p75)) v["p75 horizontal error (m)"].push_back(m.horizontal_m.p75);
         if (std::isfinite(m.final_error_m)) v["final error (m)"].push_back(m.final_error_m);
+        if (std::isfinite(m.ipin_score_m)) v["IPIN score (m)"].push_back(m.ipin_score_m);
+        if (std::isfinite(m.heading_error_deg.mean))
+            v["mean heading error (deg)"].push_back(m.heading_error_deg.mean);
+        if (std::isfinite(m.height_error_mean_m))
+            v["height error (abs mean, m)"].push_back(std::fabs(m.height_error_mean_m));
         if (std::isfinite(m.loop_closure_pct))
             v["loop closure (% of distance)"].push_back(m.loop_closure_pct);
         for (double e : m.leg_errors_pct) v["leg length error (abs %)"].push_back(std::fabs(e));
