@@ -129,6 +129,7 @@ private:
         c.min_stride_m = p.number("min_stride_m", c.min_stride_m, 0.0, 10.0);
         c.heel_strike_deg = p.number("heel_strike_deg", c.heel_strike_deg, 0.0, 90.0);
         c.max_dt_s = p.number("max_dt_s", c.max_dt_s, 1e-4, 10.0);
+        c.filter_rate_hz = p.number("filter_rate_hz", c.filter_rate_hz, 0.0, 10000.0);
         return c;
     }
 

@@ -75,11 +75,21 @@ void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in,
         const Vec3 v_new = v_ + acc * dt;
         p_ += 0.5 * (v_ + v_new) * dt;
         v_ = v_new;
-        ekf_.propagate(dt, R, f, noise_);
+        filter_dt_acc_ += dt;
+        filter_f_acc_ += f * dt;
+    }
+    // Covariance propagation over the time since the last filter step, with the
+    // mean specific force of that time (eq. (32)); then the updates.
+    const bool filter_step =
+        filter_dt_acc_ > 0 && (cfg_.filter_rate_hz <= 0 || filter_dt_acc_ * cfg_.filter_rate_hz >= 0.999);
+    if (filter_step) {
+        ekf_.propagate(filter_dt_acc_, R, filter_f_acc_ / filter_dt_acc_, noise_);
+        filter_dt_acc_ = 0.0;
+        filter_f_acc_.setZero();
     }
 
     if (stance && !in_stance_) begin_stance(t_ns);
-    if (stance && (cfg_.zupt || cfg_.zaru || cfg_.hupt)) {
+    if (stance && (filter_step || dt == 0.0) && (cfg_.zupt || cfg_.zaru || cfg_.hupt)) {
         const Vec3 w_est = w - bg;
         const double rate = w_est.norm();
         if (cfg_.zupt) {
@@ -186,7 +196,7 @@ void FootIns::stride_logic(int64_t t_ns, double dt, bool stance, const Quat& q, 
     }
     moving_s_ += dt;
     if (have_anchor_) {
-        const double vh = std::hypot(v_.x(), v_.y());
+        const double vh = std::sqrt(v_.x() * v_.x() + v_.y() * v_.y());
         if (vh > 0.3) {
             // Pitch about the level axis left of the motion, relative to the
             // attitude at the last stance; toe-up is a negative rotation about it.

@@ -51,6 +51,9 @@ struct FootInsConfig {
     double min_stride_m = 0.2;        // horizontal displacement between counted stances
     double heel_strike_deg = 12.0;    // toe-up pitch in the swing that marks a level step
     double max_dt_s = 0.1;
+    // The covariance propagation and the stance updates run at most at this
+    // rate (the mechanization runs at every sample); 0 = at every sample.
+    double filter_rate_hz = 0.0;
 };
 
 struct StrideOut {
@@ -108,6 +111,8 @@ private:
     Vec3 p_ = Vec3::Zero(), v_ = Vec3::Zero(), ba_ = Vec3::Zero();
     Vec3 f_prev_ = Vec3::Zero();
     int64_t t_prev_ = 0;
+    double filter_dt_acc_ = 0.0;
+    Vec3 filter_f_acc_ = Vec3::Zero();
     double g_ = 9.80665;
     bool g_learning_ = false;
     double g_sum_ = 0, g_n_ = 0;

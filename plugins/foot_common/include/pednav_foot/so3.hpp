@@ -27,10 +27,11 @@ inline Mat3 skew(const Vec3& w) {
 inline Quat quat_exp(const Vec3& r) {
     const double a2 = r.squaredNorm();
     double s, c;
-    if (a2 < 1e-12) {
-        // Taylor series of sin(a/2)/a and cos(a/2) to fourth order.
-        s = 0.5 - a2 / 48.0;
-        c = 1.0 - a2 / 8.0;
+    if (a2 < 1e-2) {
+        // Taylor series of sin(a/2)/a and cos(a/2); below 0.1 rad (every
+        // sample of a walk) the first omitted terms are under 1e-16.
+        s = 0.5 + a2 * (-1.0 / 48.0 + a2 * (1.0 / 3840.0 + a2 * (-1.0 / 645120.0)));
+        c = 1.0 + a2 * (-1.0 / 8.0 + a2 * (1.0 / 384.0 + a2 * (-1.0 / 46080.0 + a2 * (1.0 / 10321920.0))));
     } else {
         const double a = std::sqrt(a2);
         s = std::sin(0.5 * a) / a;
@@ -61,7 +62,7 @@ inline Mat3 cayley(const Vec3& r) {
 // plane; falls back to the body y axis (minus 90 deg) when x is near vertical.
 inline double heading_of(const Quat& q_enu_from_body) {
     const Mat3 r = q_enu_from_body.toRotationMatrix();
-    if (std::hypot(r(0, 0), r(1, 0)) > 0.1) return std::atan2(r(0, 0), r(1, 0));
+    if (r(0, 0) * r(0, 0) + r(1, 0) * r(1, 0) > 0.01) return std::atan2(r(0, 0), r(1, 0));
     return std::atan2(r(0, 1), r(1, 1)) + M_PI / 2.0;
 }
 
