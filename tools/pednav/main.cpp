@@ -17,7 +17,7 @@ const char* kUsage =
     "  demo [--out DIR]                 simulate a foot walk, run the foot pipeline, print its error, plot it\n"
     "  run --mount foot|chest|waist --input FILE [--config FILE] [--format NAME] [--output track.csv]\n"
     "      [--steps FILE] [--start x,y,z] [--heading DEG] [--geojson FILE] [--gpx FILE]\n"
-    "      [--summary FILE] [--plot FILE.svg]\n"
+    "      [--summary FILE] [--plot FILE.svg] [--column-map FILE.json] [--origin lat,lon,height]\n"
     "  plugins [--json]                 plugins loaded and files rejected\n"
     "  inspect FILE [--json]            what the engine sees in a recording\n"
     "  sim --route FILE|NAME --mount M --out DIR [--rate HZ] [--seed N]\n"
