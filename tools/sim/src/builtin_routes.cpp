@@ -116,39 +116,63 @@ Route building_tour() {
     Route r;
     r.name = "building_tour";
     r.description =
-        "Long tour of a two-storey office building: the 60 m x 30 m ring corridor of the ground floor, "
-        "two flights up, the same ring on the first floor with a stop at a door, two flights down, "
-        "back to the start; magnetic disturbances at the lift shaft and radiators";
+        "Long tour of a three-storey office building: the 60 m x 30 m ring corridor of the ground floor, "
+        "four flights up a U-shaped stairwell to the second floor and its ring, two flights down to the "
+        "first floor and its ring, two flights down and back to the start; stops at doors, magnetic "
+        "disturbances at the lift shaft and radiators";
     const double h1 = 10 * r.stair_rise_m, run = 10 * r.stair_run_m, H = 2 * h1;
     r.floor_height_m = H;
-    r.waypoints = {wp(0, 0),
-                   wp(60, 0),
-                   wp(60, 30),
-                   wp(0, 30, 0, false, 3.0),
-                   wp(0, 0),
-                   wp(10, 0),
-                   wp(10, -1.5),
-                   wp(10 + run, -1.5, h1),
-                   wp(10 + run, -3.0, h1),
-                   wp(10, -3.0, H),
-                   wp(8, -3.0, H),
-                   wp(8, 0, H),
-                   wp(60, 0, H),
-                   wp(60, 30, H, false, 5.0),
-                   wp(0, 30, H),
-                   wp(0, 0, H),
-                   wp(8, 0, H),
-                   wp(8, -3.0, H),
-                   wp(10, -3.0, H),
-                   wp(10 + run, -3.0, h1),
-                   wp(10 + run, -1.5, h1),
-                   wp(10, -1.5),
-                   wp(10, 0),
-                   wp(0, 0)};
-    for (int f = 0; f < 2; ++f) ring_walls(r, f, 0, 0, 60, 30, 2.5);
+    auto& w = r.waypoints;
+    auto ring = [&](double z, double stop_s) {  // from (8 or 0, 0) around the ring back to (0, 0)
+        w.push_back(wp(60, 0, z));
+        w.push_back(wp(60, 30, z, false, stop_s));
+        w.push_back(wp(0, 30, z));
+        w.push_back(wp(0, 0, z));
+    };
+    // Stairwell south of the corridor: the east-going flight starts at (10, -1.5), the
+    // west-going one ends at (10, -3); floors are reached at (10, -3) and left via (8, -3).
+    auto up = [&](int floor) {  // from (10, -1.5, floor H) to (10, -3, (floor + 1) H)
+        w.push_back(wp(10 + run, -1.5, floor * H + h1));
+        w.push_back(wp(10 + run, -3.0, floor * H + h1));
+        w.push_back(wp(10, -3.0, (floor + 1) * H));
+    };
+    auto down = [&](int floor) {  // from (10, -3, floor H) to (10, -1.5, (floor - 1) H)
+        w.push_back(wp(10 + run, -3.0, (floor - 1) * H + h1));
+        w.push_back(wp(10 + run, -1.5, (floor - 1) * H + h1));
+        w.push_back(wp(10, -1.5, (floor - 1) * H));
+    };
+    w.push_back(wp(0, 0));
+    ring(0.0, 3.0);
+    w.push_back(wp(10, 0));
+    w.push_back(wp(10, -1.5));
+    up(0);
+    w.push_back(wp(10, -1.5, H));
+    up(1);
+    w.push_back(wp(8, -3.0, 2 * H));
+    w.push_back(wp(8, 0, 2 * H));
+    ring(2 * H, 5.0);
+    w.push_back(wp(8, 0, 2 * H));
+    w.push_back(wp(8, -3.0, 2 * H));
+    w.push_back(wp(10, -3.0, 2 * H));
+    down(2);
+    w.push_back(wp(10, -3.0, H));
+    w.push_back(wp(8, -3.0, H));
+    w.push_back(wp(8, 0, H));
+    ring(H, 2.0);
+    w.push_back(wp(8, 0, H));
+    w.push_back(wp(8, -3.0, H));
+    w.push_back(wp(10, -3.0, H));
+    down(1);
+    w.push_back(wp(10, 0));
+    w.push_back(wp(0, 0));
+    for (int f = 0; f < 3; ++f) {
+        ring_walls(r, f, 0, 0, 60, 30, 2.5);
+        r.walls.push_back(rect(f, 7, -3.75, 10 + run + 0.5, -0.75));  // stairwell
+    }
     r.mag_disturbances.push_back({{30.0, 0.0, 1.0}, 2.5, {-20.0, 12.0, -10.0}});
     r.mag_disturbances.push_back({{60.0, 15.0, 0.5}, 1.5, {10.0, 10.0, 5.0}});
     r.mag_disturbances.push_back({{30.0, 30.0, H + 0.5}, 1.5, {-8.0, 15.0, 5.0}});
+    r.mag_disturbances.push_back({{45.0, 0.0, 2 * H + 0.5}, 2.0, {12.0, -6.0, -4.0}});
     finish(r);
     return r;
 }
