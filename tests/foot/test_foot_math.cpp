@@ -307,3 +307,27 @@ TEST_CASE("stance detector windows are in seconds: latency does not depend on th
     StanceDetector s(sc, 250.0);
     CHECK(s.latency_ns() == static_cast<int64_t>(std::llround((sc.window_s + sc.adaptive_window_s + sc.median_window_s) * 0.5e9)));
 }
+
+TEST_CASE("EKF block update of three selected states equals three scalar updates") {
+    Ekf15 a, b;
+    double d[15];
+    for (int i = 0; i < 15; ++i) d[i] = 0.02 * (i + 1);
+    a.reset_covariance(d);
+    Ekf15::Noise q{1e-4, 1e-3, 1e-8, 1e-6};
+    const Mat3 R = attitude(1.1, -0.2, 0.4);
+    for (int k = 0; k < 100; ++k) a.propagate(0.01, R, Vec3(2.0, 1.0, 9.0), q);
+    b = a;
+    const double z[3] = {0.1, -0.05, 0.02}, var[3] = {1e-4, 2e-4, 3e-4};
+    a.update_block3(Ekf15::VEL, z, var);
+    for (int i = 0; i < 3; ++i) b.update_scalar(Ekf15::VEL + i, z[i], var[i]);
+    double dp = 0, dx = 0;
+    for (int i = 0; i < 15; ++i) {
+        dx = std::max(dx, std::abs(a.x()[i] - b.x()[i]));
+        for (int j = 0; j < 15; ++j) {
+            REQUIRE(a.P(i, j) == a.P(j, i));
+            dp = std::max(dp, std::abs(a.P(i, j) - b.P(i, j)));
+        }
+    }
+    CHECK(dx < 1e-12);
+    CHECK(dp < 1e-12);
+}

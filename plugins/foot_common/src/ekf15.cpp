@@ -112,6 +112,19 @@ void Ekf15::update_scalar(int i, double z, double var) {
     for (int k = 0; k < NP; ++k) K[k] = c[k] * inv;
     const double innov = z - x_[i];
     for (int k = 0; k < N; ++k) x_[k] += K[k] * innov;
+    if (!joseph_) {
+        // P - K c^T: entry (a, b) = P_ab - (c_a c_b) / s, products commute.
+        for (int a = 0; a < N; ++a) {
+            const double ca = c[a] * inv;
+            double* pa = P_[a];
+            for (int b = a; b < N; ++b) {
+                const double v = pa[b] - ca * c[b];
+                pa[b] = v;
+                P_[b][a] = v;
+            }
+        }
+        return;
+    }
     // Joseph form (I - K e_i^T) P (I - K e_i^T)^T + K var K^T (eq. (33)),
     // expanded for H = e_i: P + s K K^T - (K c^T + c K^T). Upper triangle,
     // mirrored: symmetric by construction.
@@ -120,6 +133,70 @@ void Ekf15::update_scalar(int i, double z, double var) {
         double* pa = P_[a];
         for (int b = a; b < N; ++b) {
             const double v = pa[b] + (ska * K[b] - (ka * c[b] + ca * K[b]));
+            pa[b] = v;
+            P_[b][a] = v;
+        }
+    }
+}
+
+void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
+    // C = P H^T (columns i0..i0+2, copies), S = H P H^T + R (a copied block).
+    double C[N][3];
+    for (int k = 0; k < N; ++k)
+        for (int j = 0; j < 3; ++j) C[k][j] = P_[k][i0 + j];
+    double S[3][3];
+    for (int r = 0; r < 3; ++r)
+        for (int j = 0; j < 3; ++j) S[r][j] = C[i0 + r][j];
+    for (int j = 0; j < 3; ++j) S[j][j] += var[j];
+    // S^-1 by the adjugate (S symmetric positive definite).
+    const double a00 = S[1][1] * S[2][2] - S[1][2] * S[2][1];
+    const double a01 = S[0][2] * S[2][1] - S[0][1] * S[2][2];
+    const double a02 = S[0][1] * S[1][2] - S[0][2] * S[1][1];
+    const double det = S[0][0] * a00 + S[1][0] * a01 + S[2][0] * a02;
+    if (!(det > 0)) return;
+    const double id = 1.0 / det;
+    double Si[3][3];
+    Si[0][0] = a00 * id;
+    Si[0][1] = a01 * id;
+    Si[0][2] = a02 * id;
+    Si[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) * id;
+    Si[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) * id;
+    Si[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) * id;
+    Si[1][0] = Si[0][1];
+    Si[2][0] = Si[0][2];
+    Si[2][1] = Si[1][2];
+    // K = C S^-1 (eq. (31)); M = K S for the Joseph term K S K^T.
+    double K[N][3], M[N][3];
+    for (int k = 0; k < N; ++k)
+        for (int j = 0; j < 3; ++j) K[k][j] = C[k][0] * Si[0][j] + C[k][1] * Si[1][j] + C[k][2] * Si[2][j];
+    for (int k = 0; k < N; ++k)
+        for (int j = 0; j < 3; ++j) M[k][j] = K[k][0] * S[0][j] + K[k][1] * S[1][j] + K[k][2] * S[2][j];
+    // State (eq. (30)).
+    const double e0 = z[0] - x_[i0], e1 = z[1] - x_[i0 + 1], e2 = z[2] - x_[i0 + 2];
+    for (int k = 0; k < N; ++k) x_[k] += K[k][0] * e0 + K[k][1] * e1 + K[k][2] * e2;
+    if (!joseph_) {
+        // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, mirrored.
+        for (int a = 0; a < N; ++a) {
+            const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
+            double* pa = P_[a];
+            for (int b = a; b < N; ++b) {
+                const double v = pa[b] - (k0 * C[b][0] + k1 * C[b][1] + k2 * C[b][2]);
+                pa[b] = v;
+                P_[b][a] = v;
+            }
+        }
+        return;
+    }
+    // Joseph form (eq. (33)): P - K C^T - C K^T + K S K^T. Upper triangle, mirrored.
+    for (int a = 0; a < N; ++a) {
+        const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
+        const double c0 = C[a][0], c1 = C[a][1], c2 = C[a][2];
+        const double m0 = M[a][0], m1 = M[a][1], m2 = M[a][2];
+        double* pa = P_[a];
+        for (int b = a; b < N; ++b) {
+            const double ksk = m0 * K[b][0] + m1 * K[b][1] + m2 * K[b][2];
+            const double kc = (k0 * C[b][0] + c0 * K[b][0]) + (k1 * C[b][1] + c1 * K[b][1]) + (k2 * C[b][2] + c2 * K[b][2]);
+            const double v = pa[b] + (ksk - kc);
             pa[b] = v;
             P_[b][a] = v;
         }

@@ -21,6 +21,7 @@ FootIns::FootIns(const FootInsConfig& c) : cfg_(c) {
         d[Ekf15::BA + i] = sq(c.init_accel_bias_sd_mps2);
     }
     ekf_.reset_covariance(d);
+    ekf_.set_joseph(c.joseph_form);
     g_learning_ = !(c.gravity_mps2 > 0);
     if (!g_learning_) g_ = c.gravity_mps2;
 }
@@ -96,11 +97,15 @@ void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in,
             // A stance foot rolls about its contact point: the sensor ahead of
             // it moves at about |w| times the lever.
             const double sd = cfg_.zupt_sd_mps + cfg_.zupt_lever_m * rate;
-            for (int i = 0; i < 3; ++i) ekf_.update_scalar(Ekf15::VEL + i, -v_[i], sd * sd);
+            const double z[3] = {-v_.x(), -v_.y(), -v_.z()};
+            const double var[3] = {sd * sd, sd * sd, sd * sd};
+            ekf_.update_block3(Ekf15::VEL, z, var);
         }
         if (cfg_.zaru && rate < cfg_.zaru_max_radps) {
-            const double var = cfg_.zaru_sd_radps * cfg_.zaru_sd_radps;
-            for (int i = 0; i < 3; ++i) ekf_.update_scalar(Ekf15::BG + i, w_est[i], var);
+            const double var1 = cfg_.zaru_sd_radps * cfg_.zaru_sd_radps;
+            const double z[3] = {w_est.x(), w_est.y(), w_est.z()};
+            const double var[3] = {var1, var1, var1};
+            ekf_.update_block3(Ekf15::BG, z, var);
         }
         if (cfg_.hupt && level_step_) {
             ekf_.update_scalar(Ekf15::POS + 2, h_ref_ - p_.z(), cfg_.hupt_sd_m * cfg_.hupt_sd_m);

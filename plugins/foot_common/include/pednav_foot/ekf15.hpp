@@ -32,6 +32,11 @@ public:
 
     Ekf15() { reset_covariance(nullptr); }
 
+    // Covariance update form: Joseph (eq. (33), default; robust to a gain that
+    // is not exactly optimal) or P - K H P (the same for the optimal gain, a
+    // third of the arithmetic). Both keep P exactly symmetric.
+    void set_joseph(bool joseph) { joseph_ = joseph; }
+
     // Diagonal initial covariance (variances in the state's units).
     void reset_covariance(const double* diag15);
 
@@ -42,6 +47,11 @@ public:
     // update (eq. (30)) and Joseph-form covariance (eq. (33)) with H = e_i.
     void update_scalar(int i, double z, double var);
 
+    // Three measurements z = x[i0..i0+2] + noise (diagonal variances var) as
+    // one block: the same Joseph form with H selecting three states, one pass
+    // over P instead of three.
+    void update_block3(int i0, const double z[3], const double var[3]);
+
     const double* x() const { return x_; }
     double* x() { return x_; }
     double P(int i, int j) const { return P_[i][j]; }
@@ -50,6 +60,7 @@ public:
 private:
     alignas(64) double P_[N][NP];  // column 15 is padding, always zero
     double x_[N];
+    bool joseph_ = true;
 };
 
 }  // namespace pednav::foot

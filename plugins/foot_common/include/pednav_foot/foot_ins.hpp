@@ -54,6 +54,7 @@ struct FootInsConfig {
     // The covariance propagation and the stance updates run at most at this
     // rate (the mechanization runs at every sample); 0 = at every sample.
     double filter_rate_hz = 0.0;
+    bool joseph_form = true;  // covariance update in Joseph form (else P - K H P)
 };
 
 struct StrideOut {
