@@ -60,6 +60,17 @@ PN_SENTINEL(PNP_KIND_STEP_DETECTOR == 1 && PNP_KIND_ATTITUDE_ESTIMATOR == 2 &&
 PN_SENTINEL(PNP_NODE_OPS_MIN_SIZE == 32, node_ops_min_size);
 PN_SENTINEL(PNP_DESCRIPTOR_MIN_SIZE == 104, descriptor_min_size);
 PN_SENTINEL(PNP_LIBRARY_MIN_SIZE == 56, library_min_size);
+/* Record minimum sizes: the 1.0 sizes, pinned. */
+PN_SENTINEL(PN_IMU_MIN_SIZE == 72, imu_min_size);
+PN_SENTINEL(PN_MAG_MIN_SIZE == 48, mag_min_size);
+PN_SENTINEL(PN_BARO_MIN_SIZE == 40, baro_min_size);
+PN_SENTINEL(PN_GNSS_MIN_SIZE == 96, gnss_min_size);
+PN_SENTINEL(PN_GAIT_PHASE_MIN_SIZE == 40, gait_phase_min_size);
+PN_SENTINEL(PN_STEP_MIN_SIZE == 48, step_min_size);
+PN_SENTINEL(PN_ATTITUDE_MIN_SIZE == 160, attitude_min_size);
+PN_SENTINEL(PN_ATTITUDE_CORRECTION_MIN_SIZE == 72, attitude_correction_min_size);
+PN_SENTINEL(PN_POSITION_MIN_SIZE == 160, position_min_size);
+PN_SENTINEL(PN_STRIDE_MIN_SIZE == 152, stride_min_size);
 
 /* ------------------------------------------------------- pn_types.h */
 PN_OFF(pn_error_t, struct_size, 0);

@@ -1,6 +1,8 @@
 #include "engine.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 
@@ -10,11 +12,18 @@ namespace pednav::engine {
 
 void set_error(pn_error_t* err, pn_status_t code, const std::string& where, const std::string& message,
                int32_t detail) {
-    if (!err || err->struct_size < sizeof(pn_error_t)) return;
-    err->code = code;
-    err->detail = detail;
-    std::snprintf(err->where, sizeof err->where, "%s", where.c_str());
-    std::snprintf(err->message, sizeof err->message, "%s", message.c_str());
+    if (!err) return;
+    // Write only what fits in the caller's struct (an older, smaller pn_error_t).
+    const size_t size = std::min<size_t>(err->struct_size, sizeof(pn_error_t));
+    auto fits = [&](size_t offset, size_t bytes) { return size >= offset + bytes; };
+    if (fits(offsetof(pn_error_t, code), sizeof err->code)) err->code = code;
+    if (fits(offsetof(pn_error_t, detail), sizeof err->detail)) err->detail = detail;
+    auto text = [&](size_t offset, size_t capacity, char* dst, const std::string& src) {
+        if (size <= offset) return;
+        std::snprintf(dst, std::min(capacity, size - offset), "%s", src.c_str());
+    };
+    text(offsetof(pn_error_t, where), sizeof err->where, err->where, where);
+    text(offsetof(pn_error_t, message), sizeof err->message, err->message, message);
 }
 
 namespace {
@@ -145,9 +154,9 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
                       ", expected at least " + std::to_string(min_record_size(r->type)));
         return PN_E_INVALID_ARGUMENT;
     }
-    const std::string bad = check_record_values(r);
     const bool in_order = r->t_ns >= last_any_t_ns_ && r->t_ns > last_t_ns_[r->type];
-    if (bad.empty() && in_order) return PN_OK;
+    if (in_order && record_values_ok(r)) return PN_OK;
+    const std::string bad = check_record_values(r);
     char at[64];
     std::snprintf(at, sizeof at, " at t=%.6f s", static_cast<double>(r->t_ns) * 1e-9);
     if (!bad.empty()) {

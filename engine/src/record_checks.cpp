@@ -7,16 +7,16 @@ namespace pednav::engine {
 
 uint32_t min_record_size(pn_record_type_t type) {
     switch (type) {
-        case PN_REC_IMU: return sizeof(pn_imu_t);
-        case PN_REC_MAG: return sizeof(pn_mag_t);
-        case PN_REC_BARO: return sizeof(pn_baro_t);
-        case PN_REC_GNSS: return sizeof(pn_gnss_t);
-        case PN_REC_GAIT_PHASE: return sizeof(pn_gait_phase_t);
-        case PN_REC_STEP: return sizeof(pn_step_t);
-        case PN_REC_ATTITUDE: return sizeof(pn_attitude_t);
-        case PN_REC_ATTITUDE_CORRECTION: return sizeof(pn_attitude_correction_t);
-        case PN_REC_POSITION: return sizeof(pn_position_t);
-        case PN_REC_STRIDE: return sizeof(pn_stride_t);
+        case PN_REC_IMU: return PN_IMU_MIN_SIZE;
+        case PN_REC_MAG: return PN_MAG_MIN_SIZE;
+        case PN_REC_BARO: return PN_BARO_MIN_SIZE;
+        case PN_REC_GNSS: return PN_GNSS_MIN_SIZE;
+        case PN_REC_GAIT_PHASE: return PN_GAIT_PHASE_MIN_SIZE;
+        case PN_REC_STEP: return PN_STEP_MIN_SIZE;
+        case PN_REC_ATTITUDE: return PN_ATTITUDE_MIN_SIZE;
+        case PN_REC_ATTITUDE_CORRECTION: return PN_ATTITUDE_CORRECTION_MIN_SIZE;
+        case PN_REC_POSITION: return PN_POSITION_MIN_SIZE;
+        case PN_REC_STRIDE: return PN_STRIDE_MIN_SIZE;
         default: return 0;
     }
 }
@@ -78,7 +78,7 @@ std::string unit_quaternion(const char* field, const double* q) {
 
 namespace {
 
-bool all_finite(const double* v, int n) {
+inline bool all_finite(const double* v, int n) {
     bool ok = true;
     for (int i = 0; i < n; ++i) ok &= std::isfinite(v[i]);
     return ok;
@@ -86,8 +86,10 @@ bool all_finite(const double* v, int n) {
 
 bool cov_ok(const double* c) { return all_finite(c, 9) && c[0] >= 0 && c[4] >= 0 && c[8] >= 0; }
 
+}  // namespace
+
 // The common case without building any string; check_record_values explains.
-bool values_ok(const pn_record_header_t* h) {
+bool record_values_ok(const pn_record_header_t* h) {
     switch (h->type) {
         case PN_REC_IMU: {
             auto* r = reinterpret_cast<const pn_imu_t*>(h);
@@ -121,14 +123,11 @@ bool values_ok(const pn_record_header_t* h) {
                    (!(r->header.flags & PN_POSITION_FLAG_HAS_VELOCITY) || all_finite(r->vel_enu_mps, 3)) &&
                    std::isfinite(r->heading_rad) && cov_ok(r->cov_enu_m2);
         }
-        default: return false;  // rare types: take the explaining path
+        default: return check_record_values(h).empty();
     }
 }
 
-}  // namespace
-
 std::string check_record_values(const pn_record_header_t* h) {
-    if (values_ok(h)) return {};
     switch (h->type) {
         case PN_REC_IMU: {
             auto* r = reinterpret_cast<const pn_imu_t*>(h);

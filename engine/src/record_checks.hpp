@@ -19,5 +19,7 @@ constexpr uint64_t kInputTypes = PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_MA
 // values a consumer relies on are finite and in physical range (covariance
 // diagonals non-negative, quaternions of unit norm).
 std::string check_record_values(const pn_record_header_t* record);
+// The same verdict without building a message: the per-sample path.
+bool record_values_ok(const pn_record_header_t* record);
 
 }  // namespace pednav::engine

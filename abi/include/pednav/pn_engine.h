@@ -82,10 +82,14 @@ PN_API void pn_engine_destroy(pn_engine_t *engine);
 
 /* Push `count` IMU samples laid out `stride_bytes` apart (>= header.struct_size
  * of the first; lets apps built against another minor index correctly).
- * Samples are processed before the call returns. A sample with a non-finite
- * value or time not after the previous sample is rejected: the call stops
- * there and returns PN_E_NUMERIC / PN_E_OUT_OF_ORDER with err.detail = its index;
- * the samples before it are processed and kept. */
+ * Samples are processed before the call returns, except those at the newest
+ * time, which wait for a later sample or flush (see docs/scheduler.md). A
+ * sample with a non-finite value or time not after the previous sample is
+ * rejected: the call stops there and returns PN_E_NUMERIC / PN_E_OUT_OF_ORDER
+ * with err.detail = its index; the samples before it are processed and kept.
+ * A plugin failing while processing returns its status with err.where = the
+ * instance ("foot/position_filter") and err.detail = the index of the sample
+ * whose push triggered the processing (accepted: do not push it again). */
 PN_API pn_status_t pn_engine_push_imu(pn_engine_t *engine, const pn_imu_t *samples, size_t count,
                                       size_t stride_bytes, pn_error_t *err);
 /* Push one record of any input type (IMU, MAG, BARO, GNSS). Same rules. */

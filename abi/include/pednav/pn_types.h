@@ -60,7 +60,8 @@ enum {
 
 /* Caller-owned, fixed-size error report. Every function that takes one accepts
  * NULL. Nothing in it is heap-allocated: nothing to free, safe from any binding.
- * The callee fills it only when it returns a failure status. */
+ * The callee fills it only when it returns a failure status, and writes only
+ * the fields that fit in the caller's struct_size (text is truncated to fit). */
 typedef struct pn_error_t {
     uint32_t struct_size; /* set by the caller: sizeof(pn_error_t) */
     pn_status_t code;
@@ -88,6 +89,20 @@ enum {
     PN_REC_STRIDE = 10              /* pn_stride_t: one step's displacement, class and covariance */
 };
 #define PN_REC_TYPE_COUNT 11 /* one past the highest id defined in this minor */
+
+/* Sizes of the records as defined in 1.0. A reader accepts any record at
+ * least this large (older producers never send less); later minors only
+ * append, so these never change. */
+#define PN_IMU_MIN_SIZE 72
+#define PN_MAG_MIN_SIZE 48
+#define PN_BARO_MIN_SIZE 40
+#define PN_GNSS_MIN_SIZE 96
+#define PN_GAIT_PHASE_MIN_SIZE 40
+#define PN_STEP_MIN_SIZE 48
+#define PN_ATTITUDE_MIN_SIZE 160
+#define PN_ATTITUDE_CORRECTION_MIN_SIZE 72
+#define PN_POSITION_MIN_SIZE 160
+#define PN_STRIDE_MIN_SIZE 152
 #define PN_REC_MASK(type) ((uint64_t)1 << (type))
 
 /* Every record starts with this header. struct_size is the size of the whole

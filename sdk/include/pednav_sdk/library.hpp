@@ -9,6 +9,8 @@
 // Build it with pednav_add_plugin() (sdk/cmake/PednavPlugin.cmake).
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -22,10 +24,15 @@ namespace pednav::sdk::detail {
 
 inline void fill_error(pn_error_t* err, pn_status_t code, const std::string& where,
                        const std::string& message) noexcept {
-    if (!err || err->struct_size < sizeof(pn_error_t)) return;
-    err->code = code;
-    std::snprintf(err->where, sizeof err->where, "%s", where.c_str());
-    std::snprintf(err->message, sizeof err->message, "%s", message.c_str());
+    if (!err) return;
+    // Write only what fits in the caller's struct (an older, smaller pn_error_t).
+    const size_t size = err->struct_size < sizeof(pn_error_t) ? err->struct_size : sizeof(pn_error_t);
+    if (size >= offsetof(pn_error_t, code) + sizeof err->code) err->code = code;
+    if (size > offsetof(pn_error_t, where))
+        std::snprintf(err->where, std::min(sizeof err->where, size - offsetof(pn_error_t, where)), "%s", where.c_str());
+    if (size > offsetof(pn_error_t, message))
+        std::snprintf(err->message, std::min(sizeof err->message, size - offsetof(pn_error_t, message)), "%s",
+                      message.c_str());
 }
 
 // Maps the exception in flight to a status and fills err.
