@@ -294,6 +294,15 @@ struct SchemaOf<T, std::void_t<decltype(T::kParamsSchema)>> {
     static constexpr const char* value = T::kParamsSchema;
 };
 
+template <class T, class = void>
+struct VendorOf {
+    static constexpr const char* value = "";
+};
+template <class T>
+struct VendorOf<T, std::void_t<decltype(T::kVendor)>> {
+    static constexpr const char* value = T::kVendor;
+};
+
 template <class T>
 struct DescriptorOf {
     static constexpr auto ops = OpsFor<T>::make();
@@ -302,7 +311,7 @@ struct DescriptorOf {
                                             T::kId,
                                             T::kName,
                                             T::kVersion,
-                                            "pednav",
+                                            VendorOf<T>::value,
                                             T::kDescription,
                                             FeaturesOf<T>::value,
                                             SchemaOf<T>::value,

@@ -12,6 +12,7 @@
 //   static constexpr const char* kDescription;
 //   static constexpr uint64_t kConsumes;        PN_REC_MASK(...) | ...
 //   static constexpr uint64_t kProduces;
+//   static constexpr const char* kVendor           (optional)
 //   static constexpr const char* const* kFeatures  (optional, NULL-terminated)
 //   static constexpr const char* kParamsSchema     (optional JSON Schema)
 // and a constructor (Params& params, const CreateContext& context) that reads
