@@ -9,7 +9,7 @@
 
 namespace {
 
-const char* kUsage =
+constexpr const char* kUsage =
     "usage: pednav eval --track FILE --truth PATH [--kind KIND] [--align MODE] [--fit-points N]\n"
     "                   [--steps FILE] [--json]\n"
     "  --track   the track CSV written by pednav run (t,x,y,z,heading_deg,floor,...)\n"

@@ -27,7 +27,7 @@ namespace {
 
 using namespace pednav;
 
-const char* kUsage =
+constexpr const char* kUsage =
     "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,waist] [--only TEXT] [--seed N]\n"
     "                     [--no-recordings] [--no-sim] [--plugin-dir DIR]\n"
     "  --data    the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the "

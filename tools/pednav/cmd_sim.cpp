@@ -10,7 +10,7 @@
 
 namespace {
 
-const char* kUsage =
+constexpr const char* kUsage =
     "usage: pednav sim --route FILE|NAME --out DIR [--mount foot|chest|waist] [--rate HZ] [--seed N]\n"
     "                  [--no-errors] [--mounting ROLL,PITCH,YAW] [--no-mag] [--no-baro] [--no-gnss]\n"
     "                  [--mag-rate HZ] [--baro-rate HZ]\n"

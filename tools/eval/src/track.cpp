@@ -122,12 +122,14 @@ Track track_from_positions(const std::vector<pn_position_t>& positions) {
 
 std::vector<double> step_times_from_strides(const std::vector<pn_stride_t>& strides) {
     std::vector<double> t;
+    t.reserve(strides.size());
     for (const pn_stride_t& s : strides) t.push_back(static_cast<double>(s.header.t_ns) * 1e-9);
     return t;
 }
 
 std::vector<double> step_times_from_steps(const std::vector<pn_step_t>& steps) {
     std::vector<double> t;
+    t.reserve(steps.size());
     for (const pn_step_t& s : steps) t.push_back(static_cast<double>(s.header.t_ns) * 1e-9);
     return t;
 }

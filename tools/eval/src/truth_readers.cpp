@@ -148,11 +148,11 @@ Truth read_sim_truth(const std::string& path, double period_s) {
         const nlohmann::json r = read_json(route);
         if (r.contains("walls") && r["walls"].is_array())
             for (const auto& w : r["walls"]) {
-                WallLine line_;
-                line_.floor = w.value("floor", 0);
+                WallLine wall_line;
+                wall_line.floor = w.value("floor", 0);
                 for (const auto& p : w.at("points_enu_m"))
-                    line_.points_m.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
-                t.walls.push_back(std::move(line_));
+                    wall_line.points_m.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
+                t.walls.push_back(std::move(wall_line));
             }
     }
     return t;

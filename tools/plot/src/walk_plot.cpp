@@ -103,6 +103,7 @@ void draw_map(Svg& svg, const MapPanel& panel, double ox, double oy, double w, d
     svg.text({left - 40.0, (top + bottom) / 2.0}, "north (m)", 11.0, "middle", "#444444", -90.0);
     for (const auto& wall : panel.walls) {
         std::vector<Point> px;
+        px.reserve(wall.size());
         for (const Point& p : wall) px.push_back(to_px(p));
         svg.polyline(px, kWall);
     }

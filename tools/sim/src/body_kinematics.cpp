@@ -107,7 +107,7 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, const Route&, BodyShape sha
             // The other foot lands halfway (in time and place), then this foot.
             const Eigen::Vector3d a = plan.prints[q.from].p_enu_m, b = plan.prints[q.to].p_enu_m;
             kt.push_back(0.5 * (t_prev + q.t1_s));
-            kp.push_back(0.5 * (a + b));
+            kp.emplace_back(0.5 * (a + b));
             s.segment_at_knot.push_back(plan.prints[q.to].segment);
             kt.push_back(q.t1_s);
             kp.push_back(b);

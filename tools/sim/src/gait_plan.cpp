@@ -40,17 +40,18 @@ GaitPlan plan_gait(const Route& route) {
         // Fractions along the segment where the foot lands, and the stride time.
         std::vector<double> fractions;
         StrideKind kind = StrideKind::level;
-        double stride_s = stride_nominal_s;
-        int risers = 0;
+        // Stairs: one foot per stair, so a stride spans two risers; level: equal strides near the nominal.
+        const int risers =
+            wp.stairs ? std::max(1, static_cast<int>(std::lround(std::fabs(d.z()) / route.stair_rise_m))) : 0;
+        const int n = std::max(1, static_cast<int>(std::lround(horizontal_m / stride_nominal_m)));
+        const double stride_s = wp.stairs
+                                    ? 2.0 * route.stairs_step_period_s
+                                    : std::max(horizontal_m / n / route.speed_mps, 0.6 * stride_nominal_s);
         if (wp.stairs) {
-            risers = std::max(1, static_cast<int>(std::lround(std::fabs(d.z()) / route.stair_rise_m)));
             kind = d.z() >= 0.0 ? StrideKind::stairs_up : StrideKind::stairs_down;
             for (int k = 2; k < risers + 2; k += 2) fractions.push_back(std::min(k, risers) / double(risers));
-            stride_s = 2.0 * route.stairs_step_period_s;
         } else {
-            const int n = std::max(1, static_cast<int>(std::lround(horizontal_m / stride_nominal_m)));
             for (int k = 1; k <= n; ++k) fractions.push_back(k / double(n));
-            stride_s = std::max(horizontal_m / n / route.speed_mps, 0.6 * stride_nominal_s);
         }
         if (horizontal_m < 1e-9 && std::fabs(d.z()) < 1e-9) {
             // Same place: only the pause counts.

@@ -38,13 +38,13 @@ struct TriaxErrors {
     double noise_sigma = 0.0, rw_sigma = 0.0, range = INFINITY;
 
     TriaxErrors(bool on, Rng& rng, double scale_sigma, double bias_sigma, double rw_density,
-                double noise_density, double range_, double rate_hz) {
+                double noise_density, double saturation, double rate_hz) {
         if (!on) return;
         for (int i = 0; i < 3; ++i) scale[i] = scale_sigma * rng.normal();
         for (int i = 0; i < 3; ++i) bias[i] = bias_sigma * rng.normal();
         noise_sigma = noise_density * std::sqrt(rate_hz);
         rw_sigma = rw_density / std::sqrt(rate_hz);
-        range = range_;
+        range = saturation;
     }
     Eigen::Vector3d apply(const Eigen::Vector3d& truth, Rng& rng) {
         if (noise_sigma == 0.0 && rw_sigma == 0.0 && std::isinf(range) && scale.isZero() && bias.isZero())
@@ -246,7 +246,7 @@ std::vector<const pn_record_header_t*> SimOutput::records() const {
         if (i < imu.size() && imu[i].header.t_ns < best) best = imu[i].header.t_ns, which = 0;
         if (m < mag.size() && mag[m].header.t_ns < best) best = mag[m].header.t_ns, which = 1;
         if (b < baro.size() && baro[b].header.t_ns < best) best = baro[b].header.t_ns, which = 2;
-        if (g < gnss.size() && gnss[g].header.t_ns < best) best = gnss[g].header.t_ns, which = 3;
+        if (g < gnss.size() && gnss[g].header.t_ns < best) which = 3;
         switch (which) {
             case 0: r.push_back(&imu[i++].header); break;
             case 1: r.push_back(&mag[m++].header); break;
