@@ -72,6 +72,7 @@ private:
         c.bias_still_max_sd_radps = p.number("bias_still_max_sd_radps", c.bias_still_max_sd_radps, 0.0, 10.0);
         c.coning = p.boolean("coning", c.coning);
         c.max_dt_s = p.number("max_dt_s", c.max_dt_s, 1e-4, 10.0);
+        c.gyro_range_radps = p.number("gyro_range_radps", c.gyro_range_radps, 0.0, 1000.0);
         return c;
     }
 

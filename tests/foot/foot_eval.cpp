@@ -28,6 +28,8 @@ double hypot2(const double* a, const double* b) { return std::hypot(a[0] - b[0],
 
 std::string data_dir() { return PEDNAV_SHARED_DATA_DIR; }
 
+const double kKorogluGyroRangeRadps = 500.0 * M_PI / 180.0;
+
 std::string foot_config(const nlohmann::json& patch, double imu_rate_hz) {
     nlohmann::json doc = load_json(std::string(PEDNAV_SOURCE_DIR) + "/configs/foot.json");
     // Another detector plugin starts from its own defaults, not the preset's params.
@@ -138,7 +140,12 @@ KorogluScore score_koroglu(int n, const std::string& config_json) {
     sc.footprints = gx.size() - 1;
     for (size_t i = 1; i < gx.size(); ++i) sc.path_m += std::hypot(gx[i] - gx[i - 1], gy[i] - gy[i - 1]);
 
-    const ReplayResult r = run_file(base + ".csv", config_json);
+    // The 3DM-GX5-25 of these walks is set to +-500 deg/s and clips in brisk
+    // swings: tell the attitude estimator the sensor's range.
+    auto doc = nlohmann::json::parse(config_json);
+    auto& att = doc["pipelines"]["foot"]["attitude_estimator"]["params"];
+    if (!att.contains("gyro_range_radps")) att["gyro_range_radps"] = kKorogluGyroRangeRadps;
+    const ReplayResult r = run_file(base + ".csv", doc.dump());
     sc.strides = r.strides.size();
     // Estimated footprint: the position at the end of each annotated stance,
     // relative to the one of stride 0.

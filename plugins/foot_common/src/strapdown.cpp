@@ -81,6 +81,7 @@ bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
 
     double dt = (t_ns - t_prev_) * 1e-9;
     dt = std::min(std::max(dt, 0.0), cfg_.max_dt_s);
+    if (cfg_.gyro_range_radps > 0 && dt > 0) repair_clipping(w, dt);
     if (dt > 0) {
         const Vec3 w0 = w_prev_ - bias_;
         const Vec3 w1 = w - bias_;
@@ -90,8 +91,37 @@ bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
         q_.normalize();
     }
     t_prev_ = t_ns;
+    if (dt > 0) w_prev2_ = w_prev_;
     w_prev_ = w;
     return true;
+}
+
+void Strapdown::repair_clipping(const Vec3& w, double dt) {
+    const double level = 0.995 * cfg_.gyro_range_radps;
+    for (int i = 0; i < 3; ++i) {
+        const double m = std::abs(w[i]);
+        if (m >= level) {
+            if (clip_len_[i] == 0) {
+                clip_entry_slope_[i] = std::max(0.0, (std::abs(w_prev_[i]) - std::abs(w_prev2_[i])) / dt);
+                clip_time_[i] = 0.0;
+            }
+            ++clip_len_[i];
+            clip_time_[i] += dt;
+            continue;
+        }
+        if (clip_len_[i] == 0) continue;
+        // The run ended: a parabola from the clip level back to it over the run
+        // (plus the interval on each side) with the mean of the entry and exit
+        // slopes s peaks s T / 4 above the level; the area above is 2/3 T h.
+        const double T = clip_time_[i] + dt;
+        const double exit_slope = std::max(0.0, (std::abs(w_prev_[i]) - m) / dt);
+        const double s = 0.5 * (clip_entry_slope_[i] + exit_slope);
+        const double missing = (2.0 / 3.0) * T * (s * T / 4.0);
+        Vec3 r = Vec3::Zero();
+        r[i] = w_prev_[i] > 0 ? missing : -missing;
+        q_ = q_ * quat_exp(r);
+        clip_len_[i] = 0;
+    }
 }
 
 void Strapdown::on_mag(int64_t t_ns, const Vec3& m) {

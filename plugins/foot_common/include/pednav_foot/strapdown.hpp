@@ -36,6 +36,10 @@ struct StrapdownConfig {
     double bias_still_max_sd_radps = 0.01;  // ...when the rate's sd over it is below this (truly still)
     bool coning = true;                   // second-order coning term
     double max_dt_s = 0.1;                // longer gaps are integrated as this
+    // Gyro full-scale range; samples at or above 99.5 % of it are clipped and
+    // the missing rotation of each clipped run is restored at its end from a
+    // parabola through the run with the entry and exit slopes. 0 = off.
+    double gyro_range_radps = 0.0;
 };
 
 class Strapdown {
@@ -80,6 +84,13 @@ private:
     Vec3 sum_m_ = Vec3::Zero();
     double n_mag_ = 0;
     Vec3 last_a_ = Vec3::Zero();
+
+    // Clipping repair, per axis.
+    void repair_clipping(const Vec3& w, double dt);
+    Vec3 w_prev2_ = Vec3::Zero();
+    int clip_len_[3] = {0, 0, 0};
+    double clip_entry_slope_[3] = {0, 0, 0};
+    double clip_time_[3] = {0, 0, 0};
 };
 
 }  // namespace pednav::foot
