@@ -144,7 +144,7 @@ KorogluScore score_koroglu(int n, const std::string& config_json) {
     // swings: tell the attitude estimator the sensor's range.
     auto doc = nlohmann::json::parse(config_json);
     auto& att = doc["pipelines"]["foot"]["attitude_estimator"]["params"];
-    if (!att.contains("gyro_range_radps")) att["gyro_range_radps"] = kKorogluGyroRangeRadps;
+    if (!(att.value("gyro_range_radps", 0.0) > 0)) att["gyro_range_radps"] = kKorogluGyroRangeRadps;
     const ReplayResult r = run_file(base + ".csv", doc.dump());
     sc.strides = r.strides.size();
     // Estimated footprint: the position at the end of each annotated stance,
