@@ -13,12 +13,13 @@ namespace {
 constexpr const char* kUsage =
     "usage: pednav sim --route FILE|NAME --out DIR [--mount foot|chest|waist] [--rate HZ] [--seed N]\n"
     "                  [--no-errors] [--mounting ROLL,PITCH,YAW] [--no-mag] [--no-baro] [--no-gnss]\n"
-    "                  [--mag-rate HZ] [--baro-rate HZ]\n"
+    "                  [--mag-rate HZ] [--baro-rate HZ] [--heel-strike-g G]\n"
     "       pednav sim --list\n"
     "  --route     a route JSON file (pednav-route/1) or a built-in route name\n"
     "  --mounting  sensor axes in the foot/body frame, degrees (default 0,0,0)\n"
     "  --no-errors exact sensors: no noise, bias, scale factor, saturation or drift\n"
-    "  --mag-rate, --baro-rate  on a subset of the IMU samples (default: every sample)\n";
+    "  --mag-rate, --baro-rate  on a subset of the IMU samples (default: every sample)\n"
+    "  --heel-strike-g  foot: landing transient of this peak acceleration on level floors (default 0)\n";
 
 double to_number(const std::string& s, const std::string& option) {
     char* end = nullptr;
@@ -62,6 +63,8 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
                 options.mag_rate_hz = to_number(value(), a);
             else if (a == "--baro-rate")
                 options.baro_rate_hz = to_number(value(), a);
+            else if (a == "--heel-strike-g")
+                options.heel_strike_g = to_number(value(), a);
             else if (a == "--mounting") {
                 std::stringstream ss(value());
                 std::string part;

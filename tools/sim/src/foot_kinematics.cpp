@@ -57,6 +57,17 @@ KinState FootKinematics::at(double t_s) {
     s.p_enu_m.z() = a.p_enu_m.z() + d.z() * climb.f + clearance * arc.f;
     s.v_enu_mps.z() = d.z() * climb.df + clearance * arc.df;
     s.a_enu_mps2.z() = d.z() * climb.ddf + clearance * arc.ddf;
+    if (shape_.heel_strike_mps2 > 0.0 && b.kind == StrideKind::level) {
+        // Landing transient: two cycles of a vertical oscillation under a bump window,
+        // from 86 % to 96 % of the swing (part of the trajectory, so still exact).
+        const double x0 = 0.86 * T, D = 0.10 * T, w = 2.0 * M_PI * 2.0 / D;
+        const double A = shape_.heel_strike_mps2 / (w * w);
+        const Profile win = scaled(bump, x, x0, D);
+        const double sn = std::sin(w * (x - x0)), cs = std::cos(w * (x - x0));
+        s.p_enu_m.z() += A * win.f * sn;
+        s.v_enu_mps.z() += A * (win.df * sn + win.f * w * cs);
+        s.a_enu_mps2.z() += A * (win.ddf * sn + 2.0 * win.df * w * cs - win.f * w * w * sn);
+    }
 
     // Attitude: yaw turns with the stride; pitch toes-down at toe-off, toes-up
     // at heel strike on level floors; a little roll in swing.

@@ -14,6 +14,8 @@ struct FootShape {
     double roll_rad = 3.0 * M_PI / 180.0;                // eversion during swing
     double clearance_m = 0.12;                           // swing height above the straight line
     double stairs_clearance_m = 0.08;
+    double heel_strike_mps2 =
+        0.0;  // peak vertical acceleration of the landing transient, level floors (0: none)
 };
 
 class FootKinematics {

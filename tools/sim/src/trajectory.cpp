@@ -11,7 +11,8 @@ namespace {
 
 class FootTrajectory : public Trajectory {
 public:
-    explicit FootTrajectory(const GaitPlan& plan) : steps_(plan.landing_s), kin_(plan) {}
+    FootTrajectory(const GaitPlan& plan, const FootShape& shape)
+        : steps_(plan.landing_s), kin_(plan, shape) {}
     KinState at(double t_s) override { return kin_.at(t_s); }
     double height_above_floor_m() const override { return 0.0; }
     std::vector<double> step_times_s() const override { return steps_; }
@@ -36,8 +37,12 @@ private:
 }  // namespace
 
 std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan,
-                                            const Route& route) {
-    if (mount == "foot") return std::make_unique<FootTrajectory>(plan);
+                                            const Route& route, double heel_strike_mps2) {
+    if (mount == "foot") {
+        FootShape shape;
+        shape.heel_strike_mps2 = heel_strike_mps2;
+        return std::make_unique<FootTrajectory>(plan, shape);
+    }
     if (mount == "chest") return std::make_unique<BodyTrajectory>(plan, route, BodyShape::chest());
     if (mount == "waist") return std::make_unique<BodyTrajectory>(plan, route, BodyShape::waist());
     throw std::runtime_error("sim: unknown mount '" + mount + "' (foot, chest or waist)");

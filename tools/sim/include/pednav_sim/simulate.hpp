@@ -36,15 +36,18 @@ struct SimOptions {
     double rate_hz = 200.0;      // IMU rate; magnetometer and barometer share it
     uint64_t seed = 1;           // same seed, same output, bit for bit
     bool sensor_errors = true;   // false: every sensor is exact (noise, biases, scale, saturation, drift off)
-    double mounting_rpy_deg[3] = {0.0, 0.0,
-                                  0.0};  // sensor axes in the foot/body frame: R = Rz(yaw) Ry(pitch) Rx(roll)
+    // Sensor axes in the foot/body frame: R_body_sensor = Rz(yaw) Ry(pitch) Rx(roll), degrees.
+    double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};
     bool with_mag = true;
     bool with_baro = true;
     bool with_gnss = true;  // fixes only on outdoor segments
-    double mag_rate_hz =
-        0.0;  // 0: with every IMU sample; else on every round(rate_hz / mag_rate_hz)-th sample
-    double baro_rate_hz = 0.0;      // likewise
+    // Magnetometer and barometer rates: 0 = with every IMU sample, otherwise on every
+    // round(rate_hz / x)-th IMU sample.
+    double mag_rate_hz = 0.0;
+    double baro_rate_hz = 0.0;
     double gravity_mps2 = 9.80665;  // |g|, constant over the walk
+    // Foot: peak vertical acceleration of a landing transient on level floors, in g (0: none).
+    double heel_strike_g = 0.0;
     double earth_field_ut = 48.0;   // total intensity of the Earth field
     double inclination_deg = 64.0;  // dip, positive: field points down
     double declination_deg = 1.5;   // magnetic north east of true north
