@@ -48,7 +48,7 @@ struct MultiConditionConfig {
 struct ShoeConfig {
     double accel_sd_mps2 = 1.0;      // sigma_a
     double gyro_sd_radps = 0.5;      // sigma_w
-    double threshold = 1.0;          // gamma (dimensionless, W-normalised)
+    double threshold = 0.5;          // gamma (dimensionless, W-normalised)
     double gravity_mps2 = 0.0;       // g; 0 = the window's mean |a|
     double window_s = 0.06;          // W in seconds
     double adaptive_window_s = 1.0;  // 0 = fixed threshold only
