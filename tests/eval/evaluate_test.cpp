@@ -1,6 +1,9 @@
 // evaluate() on tracks whose errors are known by construction.
 #include <doctest/doctest.h>
 
+#include <cstdio>
+#include <fstream>
+
 #include <pednav_eval/metrics.hpp>
 #include <pednav_eval/truth_readers.hpp>
 
@@ -124,4 +127,19 @@ TEST_CASE("height error and floors") {
     CHECK(j["height_error_m"]["mean"].get<double>() == doctest::Approx(0.2));
     CHECK(j["loop_closure"]["horizontal_m"].is_null());
     CHECK(format_table(m).find("height error") != std::string::npos);
+}
+
+TEST_CASE("step times: the t_end column of pednav run --steps, else t, else the first column") {
+    const std::string path = "eval_test_steps.csv";
+    {
+        std::ofstream f(path);
+        f << "index,t_start,t_end,dx\n0,1.5,2.5,0.6\n1,2.5,3.75,1.4\n";
+    }
+    CHECK(read_step_times_csv(path) == std::vector<double>{2.5, 3.75});
+    {
+        std::ofstream f(path);
+        f << "# steps\n1.25\n2.0\n";
+    }
+    CHECK(read_step_times_csv(path) == std::vector<double>{1.25, 2.0});
+    std::remove(path.c_str());
 }

@@ -89,18 +89,27 @@ std::vector<double> read_step_times_csv(const std::string& path) {
     std::vector<double> t;
     std::string line;
     size_t n = 0;
-    bool header = true;
+    bool first = true;
+    int col = 0;  // the time column: t_end (pednav run --steps), t, or the first
     while (std::getline(in, line)) {
         ++n;
         if (line.empty() || line[0] == '#') continue;
         const std::vector<std::string> f = split(line, ',');
-        if (header) {
-            header = false;
+        if (first) {
+            first = false;
             char* end = nullptr;
             std::strtod(f[0].c_str(), &end);
-            if (f[0].empty() || *end != '\0') continue;  // a header line
+            if (f[0].empty() || *end != '\0') {  // a header line
+                if (column(f, "t_end") >= 0)
+                    col = column(f, "t_end");
+                else if (column(f, "t") >= 0)
+                    col = column(f, "t");
+                continue;
+            }
         }
-        t.push_back(to_double(f[0], path, n));
+        if (static_cast<size_t>(col) >= f.size())
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
+        t.push_back(to_double(f[col], path, n));
     }
     return t;
 }

@@ -33,8 +33,8 @@ struct Track {
 // '#' comments; extra columns ignored). Throws std::runtime_error naming the
 // file and line.
 Track read_track_csv(const std::string& path);
-// Step events: a CSV whose first column is the time in seconds (header line
-// and '#' comments skipped).
+// Step events from a CSV: the column t_end (pednav run --steps), else t, else
+// the first column, in seconds ('#' comments skipped).
 std::vector<double> read_step_times_csv(const std::string& path);
 
 Track track_from_positions(const std::vector<pn_position_t>& positions);
