@@ -125,7 +125,6 @@ private:
     int64_t last_t_ = 0;
     Vec3 last_stance_pos_ = Vec3::Zero();
     Quat last_stance_q_ = Quat::Identity();
-    double last_stance_heading_ = 0;
     Vec3 anchor_pos_ = Vec3::Zero();     // position at the end of the last counted stance
     double anchor_heading_ = 0;
     int64_t anchor_t_ = 0;
@@ -135,7 +134,6 @@ private:
     double max_toe_up_rad_ = 0;     // largest toe-up pitch since the last counted stance
     bool level_step_ = true;        // class of the step that led to the current stance
     double h_ref_ = 0;              // HUPT reference height
-    bool first_stance_done_ = false;
     int stride_index_ = 0;
     StrideOut stride_{};
 };
