@@ -1,4 +1,5 @@
 // The truth readers on the shared recordings (numbers from each SOURCE.md) and on simulated walks.
+#include <filesystem>
 #include <doctest/doctest.h>
 
 #include <cstdio>
@@ -101,7 +102,7 @@ TEST_CASE("simulated truth: read back from pednav sim's files, scores a perfect 
     o.sensor_errors = false;
     const Route route = builtin_route("stairs");
     const SimOutput out = simulate(route, o);
-    const std::string dir = "eval_test_sim_stairs";
+    const std::string dir = (std::filesystem::temp_directory_path() / "pednav_eval_test_sim_stairs").string();
     write_outputs(out, route, dir);
     const Truth t = read_truth(dir);
     CHECK(t.kind == TruthKind::simulated);
