@@ -1,0 +1,157 @@
+// Throughput of the foot plugins alone, driven through the plugin ABI (dlopen,
+// pnp_entry_v1, process per record) in lock-step with the EKF's correction fed
+// back, as the engine would: stance detection + attitude + EKF, input
+// generation excluded. Prints figures; not a test.
+//
+//   foot_plugin_bench [--route building_tour] [--rate 200] [--patch '{"joseph_form":false}'] [--callgrind]
+//   valgrind --tool=callgrind --instr-atstart=no foot_plugin_bench --callgrind
+// (instructions per sample = Ir / samples).
+#include <dlfcn.h>
+#include <valgrind/callgrind.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <pednav/pn_plugin.h>
+#include <pednav_sim/simulate.hpp>
+
+namespace {
+
+struct Node {
+    const pnp_node_ops_t* ops = nullptr;
+    void* self = nullptr;
+};
+
+// A sink that keeps the records of one process call.
+struct Sink {
+    pnp_sink_t sink{};
+    std::vector<std::array<unsigned char, PN_RECORD_MAX_SIZE>> records;
+    size_t count = 0;
+    Sink() : records(64) {
+        sink.sink_data = this;
+        sink.emit = &emit;
+    }
+    const pn_record_header_t* at(size_t i) const {
+        return reinterpret_cast<const pn_record_header_t*>(records[i].data());
+    }
+    static pn_status_t emit(const pnp_sink_t* s, const pn_record_header_t* r) noexcept {
+        auto* self = static_cast<Sink*>(s->sink_data);
+        if (self->count == self->records.size()) return PN_E_OUT_OF_MEMORY;
+        std::memcpy(self->records[self->count++].data(), r, r->struct_size);
+        return PN_OK;
+    }
+};
+
+Node create(const std::string& library, const std::string& id, const nlohmann::json& params, double rate) {
+    void* handle = dlopen((std::string(PEDNAV_PLUGIN_OUTPUT_DIR) + "/" + library).c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) throw std::runtime_error(dlerror());
+    auto entry = reinterpret_cast<const pnp_library_t* (*)()>(dlsym(handle, "pnp_entry_v1"));
+    if (!entry) throw std::runtime_error(library + ": no pnp_entry_v1");
+    const pnp_library_t* lib = entry();
+    for (uint32_t i = 0; i < lib->plugin_count; ++i) {
+        const pnp_descriptor_t* d = lib->plugins[i];
+        if (id != d->id) continue;
+        const std::string json = params.dump();
+        pnp_create_info_t info{};
+        info.abi_version = PN_ABI_VERSION;
+        info.struct_size = sizeof info;
+        info.params_json = json.c_str();
+        info.params_len = static_cast<uint32_t>(json.size());
+        info.instance_name = id.c_str();
+        info.mount = "foot";
+        info.imu_rate_hz = rate;
+        static const pnp_host_t host{PN_ABI_VERSION, sizeof(pnp_host_t), nullptr, nullptr};
+        pn_error_t err{};
+        err.struct_size = sizeof err;
+        Node n;
+        n.ops = d->ops;
+        if (d->create(d, &host, &info, &n.self, &err) != PN_OK) throw std::runtime_error(id + ": " + err.message);
+        return n;
+    }
+    throw std::runtime_error(library + ": no plugin " + id);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string route = "building_tour", patch = "{}";
+    double rate = 200;
+    bool callgrind = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--route" && i + 1 < argc) route = argv[++i];
+        else if (a == "--rate" && i + 1 < argc) rate = std::stod(argv[++i]);
+        else if (a == "--patch" && i + 1 < argc) patch = argv[++i];
+        else if (a == "--callgrind") callgrind = true;
+    }
+    try {
+        std::ifstream in(std::string(PEDNAV_SOURCE_DIR) + "/configs/foot.json");
+        nlohmann::json cfg = nlohmann::json::parse(in);
+        auto& pipe = cfg["pipelines"]["foot"];
+        pipe["position_filter"]["params"].merge_patch(nlohmann::json::parse(patch));
+
+        pednav::sim::SimOptions so;
+        so.rate_hz = rate;
+        so.with_mag = so.with_baro = so.with_gnss = false;
+        so.mounting_rpy_deg[1] = -30;
+        const auto walk = pednav::sim::simulate(pednav::sim::builtin_route(route), so);
+
+        Node det = create("libpnp_foot_stance.so", pipe["step_detector"]["plugin"], pipe["step_detector"]["params"], rate);
+        Node att = create("libpnp_foot_strapdown.so", pipe["attitude_estimator"]["plugin"],
+                          pipe["attitude_estimator"]["params"], rate);
+        Node ekf = create("libpnp_foot_ekf.so", pipe["position_filter"]["plugin"], pipe["position_filter"]["params"], rate);
+        Sink s_det, s_att, s_ekf;
+        std::array<unsigned char, PN_RECORD_MAX_SIZE> correction{};
+        bool have_correction = false;
+        size_t positions = 0, next_imu = 0;
+        const size_t n = walk.imu.size();
+
+        const auto t0 = std::chrono::steady_clock::now();
+        if (callgrind) CALLGRIND_START_INSTRUMENTATION;
+        for (size_t i = 0; i < n; ++i) {
+            const pn_record_header_t* imu = &walk.imu[i].header;
+            s_det.count = 0;
+            det.ops->process(det.self, &imu, 1, &s_det.sink, nullptr);
+            // The detector looks ahead: each decision releases its IMU sample downstream.
+            for (size_t g = 0; g < s_det.count; ++g) {
+                const pn_record_header_t* sample = &walk.imu[next_imu++].header;
+                if (have_correction) {
+                    const auto* c = reinterpret_cast<const pn_record_header_t*>(correction.data());
+                    att.ops->process(att.self, &c, 1, &s_att.sink, nullptr);
+                    have_correction = false;
+                }
+                s_att.count = 0;
+                att.ops->process(att.self, &sample, 1, &s_att.sink, nullptr);
+                const pn_record_header_t* batch[3] = {sample, s_det.at(g), nullptr};
+                uint32_t count = 2;
+                if (s_att.count) batch[count++] = s_att.at(0);
+                s_ekf.count = 0;
+                ekf.ops->process(ekf.self, batch, count, &s_ekf.sink, nullptr);
+                for (size_t k = 0; k < s_ekf.count; ++k) {
+                    const pn_record_header_t* r = s_ekf.at(k);
+                    if (r->type == PN_REC_POSITION) ++positions;
+                    if (r->type == PN_REC_ATTITUDE_CORRECTION) {
+                        std::memcpy(correction.data(), r, r->struct_size);
+                        have_correction = true;
+                    }
+                }
+            }
+        }
+        if (callgrind) CALLGRIND_STOP_INSTRUMENTATION;
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("{\"route\": \"%s\", \"rate_hz\": %.0f, \"samples\": %zu, \"positions\": %zu, \"seconds\": %.4f, "
+                    "\"samples_per_second\": %.0f, \"ns_per_sample\": %.1f}\n",
+                    route.c_str(), rate, n, positions, s, n / s, s * 1e9 / n);
+        for (Node* node : {&det, &att, &ekf}) node->ops->destroy(node->self);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "foot_plugin_bench: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
