@@ -45,51 +45,46 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
         }
     }
     static constexpr int kRows[9] = {ATT, ATT + 1, ATT + 2, POS, POS + 1, POS + 2, VEL, VEL + 1, VEL + 2};
-    // N_G = N G^T restricted to rows/cols (ATT, POS, VEL): upper triangle, mirrored.
+    // N_G = N G^T restricted to rows/cols (ATT, POS, VEL); column b of G^T is
+    // row b of G: (Rd on BG) for ATT, (dt on VEL) for POS, (-skew(f) dt on ATT,
+    // Rd on BA) for VEL. Full 9 x 9, mirrored below.
     double NG[9][9];
     for (int a = 0; a < 9; ++a) {
         const double* na = Nm[a];
-        for (int b = a; b < 9; ++b) {
-            double v;
-            if (b < 3) {
-                v = Rd[b][0] * na[BG] + Rd[b][1] * na[BG + 1] + Rd[b][2] * na[BG + 2];
-            } else if (b < 6) {
-                v = dt * na[VEL + b - 3];
-            } else if (b == 6) {
-                v = fz * na[ATT + 1] - fy * na[ATT + 2] + Rd[0][0] * na[BA] + Rd[0][1] * na[BA + 1] + Rd[0][2] * na[BA + 2];
-            } else if (b == 7) {
-                v = -fz * na[ATT] + fx * na[ATT + 2] + Rd[1][0] * na[BA] + Rd[1][1] * na[BA + 1] + Rd[1][2] * na[BA + 2];
-            } else {
-                v = fy * na[ATT] - fx * na[ATT + 1] + Rd[2][0] * na[BA] + Rd[2][1] * na[BA + 1] + Rd[2][2] * na[BA + 2];
-            }
-            NG[a][b] = v;
-            NG[b][a] = v;
+        const double g0 = na[BG], g1 = na[BG + 1], g2 = na[BG + 2];
+        const double t0 = na[ATT], t1 = na[ATT + 1], t2 = na[ATT + 2];
+        const double b0 = na[BA], b1 = na[BA + 1], b2 = na[BA + 2];
+        double* ng = NG[a];
+        for (int r = 0; r < 3; ++r) {
+            ng[r] = Rd[r][0] * g0 + Rd[r][1] * g1 + Rd[r][2] * g2;
+            ng[3 + r] = dt * na[VEL + r];
         }
+        ng[6] = fz * t1 - fy * t2 + Rd[0][0] * b0 + Rd[0][1] * b1 + Rd[0][2] * b2;
+        ng[7] = -fz * t0 + fx * t2 + Rd[1][0] * b0 + Rd[1][1] * b1 + Rd[1][2] * b2;
+        ng[8] = fy * t0 - fx * t1 + Rd[2][0] * b0 + Rd[2][1] * b1 + Rd[2][2] * b2;
     }
-    // N^T as a 15 x 16 matrix (zero in the columns BG, BA and the padding).
-    alignas(64) double NT[N][NP];
-    std::memset(NT, 0, sizeof NT);
+    // P += N + N^T + N_G. Entries between the changed rows (ATT, POS, VEL) add
+    // N(a, b) + N(b, a), a commutative sum, and N_G from its upper triangle;
+    // entries against BG, BA get N once. Each value is written to (a, b) and
+    // (b, a): exactly symmetric.
+    static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
     for (int a = 0; a < 9; ++a) {
         const int ra = kRows[a];
-        for (int j = 0; j < N; ++j) NT[j][ra] = Nm[a][j];
+        const double* na = Nm[a];
+        double* pa = P_[ra];
+        for (int o = 0; o < 6; ++o) {
+            const int c = kOther[o];
+            const double v = pa[c] + na[c];
+            pa[c] = v;
+            P_[c][ra] = v;
+        }
+        for (int b = a; b < 9; ++b) {
+            const int rb = kRows[b];
+            const double v = pa[rb] + (na[rb] + Nm[b][ra]) + NG[a][b];
+            pa[rb] = v;
+            P_[rb][ra] = v;
+        }
     }
-    // P += (N + N^T) + N_G: entry (a, b) adds N(a, b) + N(b, a), a commutative
-    // sum, then the mirrored N_G: bit-for-bit symmetric.
-    for (int a = 0; a < 9; ++a) {
-        double* __restrict pa = P_[kRows[a]];
-        const double* __restrict na = Nm[a];
-        const double* __restrict nt = NT[kRows[a]];
-        for (int b = 0; b < NP; ++b) pa[b] += na[b] + nt[b];
-    }
-    static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
-    for (int o = 0; o < 6; ++o) {
-        double* __restrict pa = P_[kOther[o]];
-        const double* __restrict nt = NT[kOther[o]];
-        for (int b = 0; b < NP; ++b) pa[b] += nt[b];
-    }
-    for (int a = 0; a < 9; ++a)
-        for (int b = 0; b < 9; ++b) P_[kRows[a]][kRows[b]] += NG[a][b];
-    for (int r = 0; r < N; ++r) P_[r][N] = 0.0;
     // Q (isotropic densities, so R Q R^T = Q).
     const double qa = q.gyro_psd * dt, qv = q.accel_psd * dt;
     const double qbg = q.gyro_bias_psd * dt, qba = q.accel_bias_psd * dt;
@@ -169,8 +164,6 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     double K[N][3], M[N][3];
     for (int k = 0; k < N; ++k)
         for (int j = 0; j < 3; ++j) K[k][j] = C[k][0] * Si[0][j] + C[k][1] * Si[1][j] + C[k][2] * Si[2][j];
-    for (int k = 0; k < N; ++k)
-        for (int j = 0; j < 3; ++j) M[k][j] = K[k][0] * S[0][j] + K[k][1] * S[1][j] + K[k][2] * S[2][j];
     // State (eq. (30)).
     const double e0 = z[0] - x_[i0], e1 = z[1] - x_[i0 + 1], e2 = z[2] - x_[i0 + 2];
     for (int k = 0; k < N; ++k) x_[k] += K[k][0] * e0 + K[k][1] * e1 + K[k][2] * e2;
@@ -188,6 +181,8 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
         return;
     }
     // Joseph form (eq. (33)): P - K C^T - C K^T + K S K^T. Upper triangle, mirrored.
+    for (int k = 0; k < N; ++k)
+        for (int j = 0; j < 3; ++j) M[k][j] = K[k][0] * S[0][j] + K[k][1] * S[1][j] + K[k][2] * S[2][j];
     for (int a = 0; a < N; ++a) {
         const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
         const double c0 = C[a][0], c1 = C[a][1], c2 = C[a][2];
