@@ -161,7 +161,7 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     Si[2][0] = Si[0][2];
     Si[2][1] = Si[1][2];
     // K = C S^-1 (eq. (31)); M = K S for the Joseph term K S K^T.
-    double K[N][3], M[N][3];
+    double K[N][3];
     for (int k = 0; k < N; ++k)
         for (int j = 0; j < 3; ++j) K[k][j] = C[k][0] * Si[0][j] + C[k][1] * Si[1][j] + C[k][2] * Si[2][j];
     // State (eq. (30)).
@@ -180,18 +180,21 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
         }
         return;
     }
-    // Joseph form (eq. (33)): P - K C^T - C K^T + K S K^T. Upper triangle, mirrored.
+    // Joseph form (eq. (33)): P - K C^T - C K^T + K S K^T
+    //   = P + K W - C K^T with W = S K^T - C^T (3 x 15). Upper triangle, mirrored.
+    double W[3][NP], KT[3][NP];
     for (int k = 0; k < N; ++k)
-        for (int j = 0; j < 3; ++j) M[k][j] = K[k][0] * S[0][j] + K[k][1] * S[1][j] + K[k][2] * S[2][j];
+        for (int j = 0; j < 3; ++j) {
+            W[j][k] = S[j][0] * K[k][0] + S[j][1] * K[k][1] + S[j][2] * K[k][2] - C[k][j];
+            KT[j][k] = K[k][j];
+        }
     for (int a = 0; a < N; ++a) {
         const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
         const double c0 = C[a][0], c1 = C[a][1], c2 = C[a][2];
-        const double m0 = M[a][0], m1 = M[a][1], m2 = M[a][2];
         double* pa = P_[a];
         for (int b = a; b < N; ++b) {
-            const double ksk = m0 * K[b][0] + m1 * K[b][1] + m2 * K[b][2];
-            const double kc = (k0 * C[b][0] + c0 * K[b][0]) + (k1 * C[b][1] + c1 * K[b][1]) + (k2 * C[b][2] + c2 * K[b][2]);
-            const double v = pa[b] + (ksk - kc);
+            const double v = pa[b] + ((k0 * W[0][b] + k1 * W[1][b] + k2 * W[2][b]) -
+                                      (c0 * KT[0][b] + c1 * KT[1][b] + c2 * KT[2][b]));
             pa[b] = v;
             P_[b][a] = v;
         }
