@@ -57,6 +57,9 @@ public:
         c.gyro_max_radps = p.number("gyro_max_radps", c.gyro_max_radps, 0.0, 100.0);
         c.window_s = p.number("window_s", c.window_s, 0.0, 2.0);
         c.median_window_s = p.number("median_window_s", c.median_window_s, 0.0, 2.0);
+        c.adaptive_window_s = p.number("adaptive_window_s", c.adaptive_window_s, 0.0, 10.0);
+        c.adaptive_ratio = p.number("adaptive_ratio", c.adaptive_ratio, 1.0, 1e6);
+        c.adaptive_max = p.number("adaptive_max", c.adaptive_max, 0.0, 1e12);
         if (c.accel_min_mps2 >= c.accel_max_mps2)
             Params::fail("accel_max_mps2", "must be greater than accel_min_mps2");
         detector_ = std::make_unique<StanceDetector>(c, capacity_rate(ctx));

@@ -300,9 +300,13 @@ TEST_CASE("stance detector windows are in seconds: latency does not depend on th
     MultiConditionConfig mc;
     mc.window_s = 0.2;
     mc.median_window_s = 0.1;
+    mc.adaptive_window_s = 0.0;
     StanceDetector a(mc, 100.0), b(mc, 400.0);
     CHECK(a.latency_ns() == 150000000);
     CHECK(b.latency_ns() == 150000000);
+    mc.adaptive_window_s = 1.0;
+    StanceDetector c(mc, 250.0);
+    CHECK(c.latency_ns() == 650000000);
     ShoeConfig sc;
     StanceDetector s(sc, 250.0);
     CHECK(s.latency_ns() == static_cast<int64_t>(std::llround((sc.window_s + sc.adaptive_window_s + sc.median_window_s) * 0.5e9)));

@@ -12,9 +12,13 @@ StanceDetector::StanceDetector(const MultiConditionConfig& c, double max_rate_hz
     : kind_(Kind::MultiCondition),
       multi_(c),
       stat_(half_ns(c.window_s), detail::capacity_for(c.window_s, max_rate_hz)),
-      adapt_(0, 16),
-      vote_(half_ns(c.median_window_s), detail::capacity_for(c.median_window_s, max_rate_hz)) {
+      adapt_(half_ns(c.adaptive_window_s), detail::capacity_for(c.adaptive_window_s, max_rate_hz)),
+      vote_(half_ns(c.median_window_s), detail::capacity_for(c.median_window_s, max_rate_hz)),
+      adaptive_(c.adaptive_window_s > 0),
+      adaptive_ratio_(c.adaptive_ratio),
+      adaptive_max_(c.adaptive_max) {
     stat_.acc().is_shoe = false;
+    adapt_.acc().init(detail::capacity_for(c.adaptive_window_s, max_rate_hz));
 }
 
 StanceDetector::StanceDetector(const ShoeConfig& c, double max_rate_hz)
@@ -23,7 +27,9 @@ StanceDetector::StanceDetector(const ShoeConfig& c, double max_rate_hz)
       stat_(half_ns(c.window_s), detail::capacity_for(c.window_s, max_rate_hz)),
       adapt_(half_ns(c.adaptive_window_s), detail::capacity_for(c.adaptive_window_s, max_rate_hz)),
       vote_(half_ns(c.median_window_s), detail::capacity_for(c.median_window_s, max_rate_hz)),
-      adaptive_(c.adaptive_window_s > 0) {
+      adaptive_(c.adaptive_window_s > 0),
+      adaptive_ratio_(c.adaptive_ratio),
+      adaptive_max_(c.adaptive_max) {
     stat_.acc().is_shoe = true;
     adapt_.acc().init(detail::capacity_for(c.adaptive_window_s, max_rate_hz));
 }
@@ -35,11 +41,13 @@ bool StanceDetector::test(const detail::ImuElem& centre, double& statistic) cons
         // foot-imu-zupt-zaru-ekf eq. (18)-(19): mean and variance of |a| over the window.
         const double mean = m.s1 / m.n;
         const double var = std::max(0.0, m.s2 / m.n - mean * mean);
-        statistic = std::sqrt(var);
+        const double sd = std::sqrt(var);
         const double a_norm = centre.am + 9.81;
         const bool c1 = a_norm > multi_.accel_min_mps2 && a_norm < multi_.accel_max_mps2;  // eq. (17)
-        const bool c2 = statistic < multi_.accel_std_max_mps2;                              // eq. (20)
+        const bool c2 = sd < multi_.accel_std_max_mps2;                                     // eq. (20)
         const bool c3 = centre.w2 < multi_.gyro_max_radps * multi_.gyro_max_radps;         // eq. (22)
+        // C2 and C3 as one margin (< 1 when both hold), for plots and the adaptive stage.
+        statistic = std::max(sd / multi_.accel_std_max_mps2, std::sqrt(centre.w2) / multi_.gyro_max_radps);
         return c1 && c2 && c3;                                                               // eq. (23)
     }
     const detail::ShoeAcc& s = acc.shoe;

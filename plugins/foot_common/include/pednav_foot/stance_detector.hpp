@@ -32,6 +32,11 @@ struct MultiConditionConfig {
     double gyro_max_radps = 1.0;        // C3: |w| below this, eq. (22)
     double window_s = 0.15;             // centred window of eq. (18)-(19) (paper: 31 samples at 100 Hz)
     double median_window_s = 0.11;      // majority filter (paper: 11 samples at 100 Hz)
+    // Optional adaptive threshold (0 = the paper's fixed conditions only), as
+    // for SHOE, on the statistic max(std|a| / accel_std_max, |w| / gyro_max).
+    double adaptive_window_s = 0.0;
+    double adaptive_ratio = 2.0;
+    double adaptive_max = 4.0;
 };
 
 // SHOE / GLRT detector (Skog, Handel, Nilsson, Rantakokko 2010, eq. (10)):
@@ -96,6 +101,7 @@ struct StatElem {
     int64_t t_ns;
     double statistic;
     uint64_t seq;
+    bool fixed;  // the fixed-threshold decision
 };
 // Sliding minimum of StatElem::statistic: monotone deque in a ring.
 struct MinAcc {
@@ -199,7 +205,7 @@ private:
             vote_.push(v, [&](const detail::VoteElem& e, const detail::VoteAcc& a) { decide(e, a, out); });
             return;
         }
-        adapt_.push(detail::StatElem{c.t_ns, v.statistic, seq_++},
+        adapt_.push(detail::StatElem{c.t_ns, v.statistic, seq_++, v.stance},
                     [&](const detail::StatElem& e, const detail::MinAcc& m) { adapt(e, m, out); });
     }
 
@@ -208,8 +214,7 @@ private:
         detail::VoteElem v;
         v.t_ns = e.t_ns;
         v.statistic = e.statistic;
-        v.stance = e.statistic < shoe_.threshold ||
-                   (e.statistic < shoe_.adaptive_max && e.statistic <= shoe_.adaptive_ratio * m.min());
+        v.stance = e.fixed || (e.statistic < adaptive_max_ && e.statistic <= adaptive_ratio_ * m.min());
         vote_.push(v, [&](const detail::VoteElem& x, const detail::VoteAcc& a) { decide(x, a, out); });
     }
 
@@ -228,6 +233,7 @@ private:
     CentredWindow<detail::StatElem, detail::MinAcc> adapt_;
     CentredWindow<detail::VoteElem, detail::VoteAcc> vote_;
     bool adaptive_ = false;
+    double adaptive_ratio_ = 0, adaptive_max_ = 0;
     uint64_t seq_ = 0;
     const StatAcc* acc_view_ = nullptr;
 };
