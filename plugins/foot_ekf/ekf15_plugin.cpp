@@ -14,6 +14,8 @@ using pednav::foot::Vec3;
 class FootEkf15 : public PositionFilter {
 public:
     static constexpr const char* kId = "org.pednav.foot.ekf15";
+    static constexpr const char* kVendor = "pednav";
+    static constexpr const char* const kFeatures[] = {"mount:foot", "needs:gait_phase", "needs:attitude", nullptr};
     static constexpr const char* kName = "foot INS, 15-state error-state EKF";
     static constexpr const char* kVersion = "1.0.0";
     static constexpr const char* kDescription =

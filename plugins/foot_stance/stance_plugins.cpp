@@ -43,6 +43,8 @@ private:
 class MultiConditionStance : public StanceBase {
 public:
     static constexpr const char* kId = "org.pednav.foot.stance.multicondition";
+    static constexpr const char* kVendor = "pednav";
+    static constexpr const char* const kFeatures[] = {"mount:foot", nullptr};
     static constexpr const char* kName = "foot stance, multi-condition";
     static constexpr const char* kVersion = "1.0.0";
     static constexpr const char* kDescription =
@@ -69,6 +71,8 @@ public:
 class ShoeStance : public StanceBase {
 public:
     static constexpr const char* kId = "org.pednav.foot.stance.shoe";
+    static constexpr const char* kVendor = "pednav";
+    static constexpr const char* const kFeatures[] = {"mount:foot", nullptr};
     static constexpr const char* kName = "foot stance, SHOE/GLRT";
     static constexpr const char* kVersion = "1.0.0";
     static constexpr const char* kDescription =

@@ -17,6 +17,8 @@ using pednav::foot::Vec3;
 class FootStrapdown : public AttitudeEstimator {
 public:
     static constexpr const char* kId = "org.pednav.foot.strapdown";
+    static constexpr const char* kVendor = "pednav";
+    static constexpr const char* const kFeatures[] = {"mount:foot", "uses:mag", nullptr};
     static constexpr const char* kName = "foot strapdown attitude";
     static constexpr const char* kVersion = "1.0.0";
     static constexpr const char* kDescription =
