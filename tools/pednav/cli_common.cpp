@@ -40,6 +40,7 @@ std::string read_text_file(const std::string& path) {
 }
 
 std::vector<double> parse_numbers(const std::string& text, size_t count, const std::string& option) {
+    const std::string expected = count == 1 ? "a number" : std::to_string(count) + " comma-separated numbers";
     std::vector<double> out;
     std::stringstream ss(text);
     std::string item;
@@ -47,12 +48,20 @@ std::vector<double> parse_numbers(const std::string& text, size_t count, const s
         char* end = nullptr;
         const double v = std::strtod(item.c_str(), &end);
         if (item.empty() || *end != '\0' || !std::isfinite(v))
-            throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got \"" + text + "\"");
+            throw UsageError(option + " expects " + expected + ", got \"" + text + "\"");
         out.push_back(v);
     }
-    if (out.size() != count)
-        throw UsageError(option + " expects " + std::to_string(count) + " comma-separated numbers, got \"" + text + "\"");
+    if (out.size() != count) throw UsageError(option + " expects " + expected + ", got \"" + text + "\"");
     return out;
+}
+
+uint64_t parse_count(const std::string& text, const std::string& option) {
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+    if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE)
+        throw UsageError(option + " expects a non-negative integer, got \"" + text + "\"");
+    return static_cast<uint64_t>(v);
 }
 
 }  // namespace pednav::cli

@@ -7,6 +7,8 @@
 #include <pednav_eval/metrics.hpp>
 #include <pednav_eval/truth_readers.hpp>
 
+#include "cli_common.hpp"
+
 namespace {
 
 constexpr const char* kUsage =
@@ -27,12 +29,10 @@ int pednav_cmd_eval(const std::vector<std::string>& args) {
     bool json = false;
     EvalOptions options;
     try {
-        for (size_t i = 0; i < args.size(); ++i) {
-            const std::string& a = args[i];
-            auto value = [&]() -> std::string {
-                if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-                return args[++i];
-            };
+        pednav::cli::Args in(args);
+        while (!in.done()) {
+            const std::string a = in.next();
+            auto value = [&] { return in.value(a); };
             if (a == "--track")
                 track_path = value();
             else if (a == "--truth")
@@ -42,7 +42,7 @@ int pednav_cmd_eval(const std::vector<std::string>& args) {
             else if (a == "--align")
                 align_name = value();
             else if (a == "--fit-points")
-                options.fit_points = static_cast<size_t>(std::strtoul(value().c_str(), nullptr, 10));
+                options.fit_points = static_cast<size_t>(pednav::cli::parse_count(value(), a));
             else if (a == "--steps")
                 steps_path = value();
             else if (a == "--json")
@@ -51,12 +51,12 @@ int pednav_cmd_eval(const std::vector<std::string>& args) {
                 std::fputs(kUsage, stdout);
                 return 0;
             } else
-                throw std::invalid_argument("unknown option " + a);
+                throw pednav::cli::UsageError("unknown option " + a);
         }
-        if (track_path.empty()) throw std::invalid_argument("--track is required");
+        if (track_path.empty()) throw pednav::cli::UsageError("--track is required");
         if (truth_path.empty() && kind.rfind("loop", 0) != 0)
-            throw std::invalid_argument("--truth is required");
-    } catch (const std::invalid_argument& e) {
+            throw pednav::cli::UsageError("--truth is required");
+    } catch (const pednav::cli::UsageError& e) {
         std::fprintf(stderr, "pednav eval: %s\n%s", e.what(), kUsage);
         return 2;
     }

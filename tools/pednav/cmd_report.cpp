@@ -310,12 +310,10 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
     uint64_t seed = 1;
     bool recordings = true, simulated = true;
     try {
-        for (size_t i = 0; i < args.size(); ++i) {
-            const std::string& a = args[i];
-            auto value = [&]() -> std::string {
-                if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-                return args[++i];
-            };
+        pednav::cli::Args in(args);
+        while (!in.done()) {
+            const std::string a = in.next();
+            auto value = [&] { return in.value(a); };
             if (a == "--out")
                 out = value();
             else if (a == "--data")
@@ -323,7 +321,7 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             else if (a == "--only")
                 only = value();
             else if (a == "--seed")
-                seed = std::strtoull(value().c_str(), nullptr, 10);
+                seed = pednav::cli::parse_count(value(), a);
             else if (a == "--plugin-dir")
                 plugin_dirs.push_back(value());
             else if (a == "--no-recordings")
@@ -339,10 +337,10 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
                 std::fputs(kUsage, stdout);
                 return 0;
             } else
-                throw std::invalid_argument("unknown option " + a);
+                throw pednav::cli::UsageError("unknown option " + a);
         }
-        if (out.empty()) throw std::invalid_argument("--out is required");
-    } catch (const std::invalid_argument& e) {
+        if (out.empty()) throw pednav::cli::UsageError("--out is required");
+    } catch (const pednav::cli::UsageError& e) {
         std::fprintf(stderr, "pednav report: %s\n%s", e.what(), kUsage);
         return 2;
     }

@@ -8,6 +8,8 @@
 
 #include <pednav_sim/simulate.hpp>
 
+#include "cli_common.hpp"
+
 namespace {
 
 constexpr const char* kUsage =
@@ -21,13 +23,6 @@ constexpr const char* kUsage =
     "  --mag-rate, --baro-rate  on a subset of the IMU samples (default: every sample)\n"
     "  --heel-strike-g  foot: landing transient of this peak acceleration on level floors (default 0)\n";
 
-double to_number(const std::string& s, const std::string& option) {
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end != '\0') throw std::invalid_argument(option + ": not a number: " + s);
-    return v;
-}
-
 }  // namespace
 
 int pednav_cmd_sim(const std::vector<std::string>& args) {
@@ -35,12 +30,10 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
     std::string route_arg, out_dir;
     SimOptions options;
     try {
-        for (size_t i = 0; i < args.size(); ++i) {
-            const std::string& a = args[i];
-            auto value = [&]() -> std::string {
-                if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
-                return args[++i];
-            };
+        pednav::cli::Args in(args);
+        while (!in.done()) {
+            const std::string a = in.next();
+            auto value = [&] { return in.value(a); };
             if (a == "--route")
                 route_arg = value();
             else if (a == "--out")
@@ -48,9 +41,9 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
             else if (a == "--mount")
                 options.mount = value();
             else if (a == "--rate")
-                options.rate_hz = to_number(value(), a);
+                options.rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
             else if (a == "--seed")
-                options.seed = static_cast<uint64_t>(to_number(value(), a));
+                options.seed = pednav::cli::parse_count(value(), a);
             else if (a == "--no-errors")
                 options.sensor_errors = false;
             else if (a == "--no-mag")
@@ -60,20 +53,20 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
             else if (a == "--no-gnss")
                 options.with_gnss = false;
             else if (a == "--mag-rate")
-                options.mag_rate_hz = to_number(value(), a);
+                options.mag_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
             else if (a == "--baro-rate")
-                options.baro_rate_hz = to_number(value(), a);
+                options.baro_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
             else if (a == "--heel-strike-g")
-                options.heel_strike_g = to_number(value(), a);
+                options.heel_strike_g = pednav::cli::parse_numbers(value(), 1, a)[0];
             else if (a == "--mounting") {
                 std::stringstream ss(value());
                 std::string part;
                 int n = 0;
                 while (std::getline(ss, part, ',')) {
-                    if (n >= 3) throw std::invalid_argument("--mounting needs three numbers");
-                    options.mounting_rpy_deg[n++] = to_number(part, a);
+                    if (n >= 3) throw pednav::cli::UsageError("--mounting needs three numbers");
+                    options.mounting_rpy_deg[n++] = pednav::cli::parse_numbers(part, 1, a)[0];
                 }
-                if (n != 3) throw std::invalid_argument("--mounting needs three numbers");
+                if (n != 3) throw pednav::cli::UsageError("--mounting needs three numbers");
             } else if (a == "--list") {
                 for (const std::string& name : builtin_route_names())
                     std::printf("%-16s %s\n", name.c_str(), builtin_route(name).description.c_str());
@@ -82,12 +75,12 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
                 std::fputs(kUsage, stdout);
                 return 0;
             } else {
-                throw std::invalid_argument("unknown option " + a);
+                throw pednav::cli::UsageError("unknown option " + a);
             }
         }
         if (route_arg.empty() || out_dir.empty())
-            throw std::invalid_argument("--route and --out are required");
-    } catch (const std::invalid_argument& e) {
+            throw pednav::cli::UsageError("--route and --out are required");
+    } catch (const pednav::cli::UsageError& e) {
         std::fprintf(stderr, "pednav sim: %s\n%s", e.what(), kUsage);
         return 2;
     }
