@@ -36,14 +36,18 @@ int pednav_cmd_demo(const std::vector<std::string>& argv) {
         else throw cli::UsageError("unknown option " + a + " for demo");
     }
     const sim::Route route = sim::builtin_route(route_name);
-    std::printf("simulating %s with a foot-mounted IMU at %.0f Hz (seed %llu, consumer-grade sensor errors)\n",
+    std::printf("simulating %s with a foot-mounted IMU at %.0f Hz (seed %llu, consumer-grade sensor errors);\n"
+                "start point and heading given\n",
                 route_name.c_str(), so.rate_hz, static_cast<unsigned long long>(so.seed));
     const sim::SimOutput walk = sim::simulate(route, so);
     sim::write_outputs(walk, route, out_dir);
 
     options.config_json = cli::load_config("", "foot");
     options.mount = "foot";
+    // Start point and heading given, as a user does with --start and --heading
+    // (without them the heading comes from the magnetometer).
     for (int i = 0; i < 3; ++i) options.start_enu_m[i] = walk.truth.front().pos_enu_m[i];
+    options.heading_deg = walk.truth.front().heading_deg;
     const ReplayResult r = cli::run_with_progress(options, walk.records());
     for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (!r.error.empty()) {
