@@ -54,7 +54,11 @@ EngineConfig parse_config(const std::string& text, const std::string& mount_over
         fail("", std::string("config is not valid JSON: ") + e.what());
     }
     if (!doc.is_object()) fail("", "config must be a JSON object");
-    check_keys(doc, "", {"format", "mount", "imu_rate_hz", "pipelines", "description"});
+    check_keys(doc, "", {"format", "mount", "imu_rate_hz", "pipelines", "description", "input"});
+    // "input" configures the file readers of the tools (format, column map);
+    // the engine itself does not read files.
+    if (auto in = doc.find("input"); in != doc.end() && !in->is_object())
+        fail("/input", "\"input\" must be an object (reader settings: format, column_map)");
     auto format = doc.find("format");
     if (format == doc.end() || !format->is_string() || format->get<std::string>() != "pednav-config/1")
         fail("/format", "\"format\" must be \"pednav-config/1\"");
