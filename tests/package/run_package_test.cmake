@@ -7,7 +7,8 @@
 # 3. runs the program on the plugin (10 steps expected) and checks the
 #    plugin exports only pnp_entry_v1;
 # 4. compiles the same C program with `pkg-config --cflags --libs pednav`;
-# 5. checks that no test fixture plugin was installed.
+# 5. runs the installed CLI: it finds the installed plugins and presets;
+# 6. checks that no test fixture plugin was installed.
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -54,6 +55,17 @@ if(PKG_CONFIG)
   endif()
   message(STATUS "pkg-config consumer: ${run_out}")
 endif()
+
+# The installed CLI finds the installed first-party plugins and presets with no flag.
+run("${prefix}/bin/pednav" plugins --json)
+if(NOT run_out MATCHES "org.pednav.foot.ekf15" OR NOT run_out MATCHES "\"rejected\": \\[\\]")
+  message(FATAL_ERROR "installed pednav plugins: ${run_out}")
+endif()
+run("${prefix}/bin/pednav" demo --out "${WORK_DIR}/demo")
+if(NOT run_out MATCHES "loop closes")
+  message(FATAL_ERROR "installed pednav demo: ${run_out}")
+endif()
+message(STATUS "installed CLI: plugins and presets found")
 
 foreach(fixture good throws emits_nan duplicate_id wrong_major wrong_major_field no_entry too_small
                 too_small_descriptor old_minor new_minor)
