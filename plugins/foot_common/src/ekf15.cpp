@@ -9,7 +9,22 @@ void Ekf15::reset_covariance(const double* diag) {
         for (int i = 0; i < N; ++i) P_[i][i] = diag[i];
 }
 
+void Ekf15::mirror_lower() {
+    for (int a = 1; a < N; ++a) {
+        double* __restrict pa = P_[a];
+        for (int b = 0; b < a; ++b) pa[b] = P_[b][a];
+    }
+}
+
+void Ekf15::column(int i, double* out) const {
+    for (int k = 0; k < i; ++k) out[k] = P_[k][i];
+    for (int k = i; k < N; ++k) out[k] = P_[i][k];
+    out[N] = 0.0;
+}
+
 void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
+    // The products below read whole rows of P: restore the lower triangle.
+    mirror_lower();
     // Phi = I + G with G nonzero only in rows ATT, POS, VEL:
     //   G[ATT,BG] = -R dt, G[POS,VEL] = I dt, G[VEL,ATT] = -skew(f) dt, G[VEL,BA] = -R dt.
     // Phi P Phi^T = P + N + N^T + N_G where N = G P and N_G = G P G^T, written
@@ -47,26 +62,28 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     static constexpr int kRows[9] = {ATT, ATT + 1, ATT + 2, POS, POS + 1, POS + 2, VEL, VEL + 1, VEL + 2};
     // N_G = N G^T restricted to rows/cols (ATT, POS, VEL); column b of G^T is
     // row b of G: (Rd on BG) for ATT, (dt on VEL) for POS, (-skew(f) dt on ATT,
-    // Rd on BA) for VEL. Full 9 x 9, mirrored below.
+    // Rd on BA) for VEL. Only the 3 x 3 blocks on or above the block diagonal
+    // are computed (the loop below reads NG[a][b] for b >= a only).
     double NG[9][9];
     for (int a = 0; a < 9; ++a) {
         const double* na = Nm[a];
-        const double g0 = na[BG], g1 = na[BG + 1], g2 = na[BG + 2];
         const double t0 = na[ATT], t1 = na[ATT + 1], t2 = na[ATT + 2];
         const double b0 = na[BA], b1 = na[BA + 1], b2 = na[BA + 2];
         double* ng = NG[a];
-        for (int r = 0; r < 3; ++r) {
-            ng[r] = Rd[r][0] * g0 + Rd[r][1] * g1 + Rd[r][2] * g2;
-            ng[3 + r] = dt * na[VEL + r];
+        if (a < 3) {
+            const double g0 = na[BG], g1 = na[BG + 1], g2 = na[BG + 2];
+            for (int r = 0; r < 3; ++r) ng[r] = Rd[r][0] * g0 + Rd[r][1] * g1 + Rd[r][2] * g2;
         }
+        if (a < 6)
+            for (int r = 0; r < 3; ++r) ng[3 + r] = dt * na[VEL + r];
         ng[6] = fz * t1 - fy * t2 + Rd[0][0] * b0 + Rd[0][1] * b1 + Rd[0][2] * b2;
         ng[7] = -fz * t0 + fx * t2 + Rd[1][0] * b0 + Rd[1][1] * b1 + Rd[1][2] * b2;
         ng[8] = fy * t0 - fx * t1 + Rd[2][0] * b0 + Rd[2][1] * b1 + Rd[2][2] * b2;
     }
     // P += N + N^T + N_G. Entries between the changed rows (ATT, POS, VEL) add
     // N(a, b) + N(b, a), a commutative sum, and N_G from its upper triangle;
-    // entries against BG, BA get N once. Each value is written to (a, b) and
-    // (b, a): exactly symmetric.
+    // entries against BG, BA get N once. Each value is written to the upper
+    // triangle only (its one copy): exactly symmetric.
     static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
     for (int a = 0; a < 9; ++a) {
         const int ra = kRows[a];
@@ -75,14 +92,12 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
         for (int o = 0; o < 6; ++o) {
             const int c = kOther[o];
             const double v = pa[c] + na[c];
-            pa[c] = v;
-            P_[c][ra] = v;
+            if (ra < c) pa[c] = v;
+            else P_[c][ra] = v;
         }
         for (int b = a; b < 9; ++b) {
             const int rb = kRows[b];
-            const double v = pa[rb] + (na[rb] + Nm[b][ra]) + NG[a][b];
-            pa[rb] = v;
-            P_[rb][ra] = v;
+            pa[rb] = pa[rb] + (na[rb] + Nm[b][ra]) + NG[a][b];
         }
     }
     // Q (isotropic densities, so R Q R^T = Q).
@@ -98,8 +113,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
 
 void Ekf15::update_scalar(int i, double z, double var) {
     alignas(64) double c[NP];
-    for (int k = 0; k < N; ++k) c[k] = P_[k][i];  // P H^T: a copy of column i
-    c[N] = 0.0;
+    column(i, c);                                 // P H^T: a copy of column i
     const double s = c[i] + var;                  // H P H^T + R: a copy of P_ii
     if (!(s > 0)) return;
     alignas(64) double K[NP];
@@ -108,37 +122,33 @@ void Ekf15::update_scalar(int i, double z, double var) {
     const double innov = z - x_[i];
     for (int k = 0; k < N; ++k) x_[k] += K[k] * innov;
     if (!joseph_) {
-        // P - K c^T: entry (a, b) = P_ab - (c_a c_b) / s, products commute.
+        // P - K c^T: entry (a, b) = P_ab - (c_a c_b) / s, upper triangle.
+        // Rows start at an even column (two-wide vectors); the one entry
+        // below the diagonal that this touches is stale anyway.
         for (int a = 0; a < N; ++a) {
             const double ca = c[a] * inv;
-            double* pa = P_[a];
-            for (int b = a; b < N; ++b) {
-                const double v = pa[b] - ca * c[b];
-                pa[b] = v;
-                P_[b][a] = v;
-            }
+            double* __restrict pa = P_[a];
+            for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] - ca * c[b];
         }
         return;
     }
     // Joseph form (I - K e_i^T) P (I - K e_i^T)^T + K var K^T (eq. (33)),
-    // expanded for H = e_i: P + s K K^T - (K c^T + c K^T). Upper triangle,
-    // mirrored: symmetric by construction.
+    // expanded for H = e_i: P + s K K^T - (K c^T + c K^T). Upper triangle
+    // only (rows from an even column, as above): symmetric by construction.
     for (int a = 0; a < N; ++a) {
         const double ka = K[a], ca = c[a], ska = s * ka;
-        double* pa = P_[a];
-        for (int b = a; b < N; ++b) {
-            const double v = pa[b] + (ska * K[b] - (ka * c[b] + ca * K[b]));
-            pa[b] = v;
-            P_[b][a] = v;
-        }
+        double* __restrict pa = P_[a];
+        for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] + (ska * K[b] - (ka * c[b] + ca * K[b]));
     }
 }
 
 void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     // C = P H^T (columns i0..i0+2, copies), S = H P H^T + R (a copied block).
+    alignas(64) double CT[3][NP];
+    for (int j = 0; j < 3; ++j) column(i0 + j, CT[j]);
     double C[N][3];
     for (int k = 0; k < N; ++k)
-        for (int j = 0; j < 3; ++j) C[k][j] = P_[k][i0 + j];
+        for (int j = 0; j < 3; ++j) C[k][j] = CT[j][k];
     double S[3][3];
     for (int r = 0; r < 3; ++r)
         for (int j = 0; j < 3; ++j) S[r][j] = C[i0 + r][j];
@@ -168,36 +178,32 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     const double e0 = z[0] - x_[i0], e1 = z[1] - x_[i0 + 1], e2 = z[2] - x_[i0 + 2];
     for (int k = 0; k < N; ++k) x_[k] += K[k][0] * e0 + K[k][1] * e1 + K[k][2] * e2;
     if (!joseph_) {
-        // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, mirrored.
+        // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, rows
+        // from an even column.
         for (int a = 0; a < N; ++a) {
             const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
-            double* pa = P_[a];
-            for (int b = a; b < N; ++b) {
-                const double v = pa[b] - (k0 * C[b][0] + k1 * C[b][1] + k2 * C[b][2]);
-                pa[b] = v;
-                P_[b][a] = v;
-            }
+            double* __restrict pa = P_[a];
+            for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] - (k0 * CT[0][b] + k1 * CT[1][b] + k2 * CT[2][b]);
         }
         return;
     }
     // Joseph form (eq. (33)): P - K C^T - C K^T + K S K^T
-    //   = P + K W - C K^T with W = S K^T - C^T (3 x 15). Upper triangle, mirrored.
-    double W[3][NP], KT[3][NP];
+    //   = P + K W - C K^T with W = S K^T - C^T (3 x 15). Upper triangle only,
+    // rows from an even column (the padding column stays zero).
+    alignas(64) double W[3][NP], KT[3][NP];
     for (int k = 0; k < N; ++k)
         for (int j = 0; j < 3; ++j) {
             W[j][k] = S[j][0] * K[k][0] + S[j][1] * K[k][1] + S[j][2] * K[k][2] - C[k][j];
             KT[j][k] = K[k][j];
         }
+    for (int j = 0; j < 3; ++j) W[j][N] = KT[j][N] = 0.0;
     for (int a = 0; a < N; ++a) {
         const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
         const double c0 = C[a][0], c1 = C[a][1], c2 = C[a][2];
-        double* pa = P_[a];
-        for (int b = a; b < N; ++b) {
-            const double v = pa[b] + ((k0 * W[0][b] + k1 * W[1][b] + k2 * W[2][b]) -
-                                      (c0 * KT[0][b] + c1 * KT[1][b] + c2 * KT[2][b]));
-            pa[b] = v;
-            P_[b][a] = v;
-        }
+        double* __restrict pa = P_[a];
+        for (int b = a & ~1; b < NP; ++b)
+            pa[b] = pa[b] + ((k0 * W[0][b] + k1 * W[1][b] + k2 * W[2][b]) -
+                             (c0 * KT[0][b] + c1 * KT[1][b] + c2 * KT[2][b]));
     }
 }
 

@@ -1,6 +1,8 @@
 // 15-state error-state Kalman filter covariance and estimate, hand-written
 // for speed: block-structured transition, selection measurements as scalar
-// Joseph-form updates, symmetric by construction, no allocation.
+// Joseph-form updates, symmetric by construction, no allocation. Only the
+// upper triangle of P is kept up to date; propagate() mirrors it once into the
+// lower triangle (the rows it reads whole), updates write upper rows only.
 //
 // Error state (foot-imu-zupt-zaru-ekf eq. (24)), all "true minus estimate":
 //   x = [phi (ENU attitude error, rad), dbg (gyro bias, rad/s, body),
@@ -54,11 +56,17 @@ public:
 
     const double* x() const { return x_; }
     double* x() { return x_; }
-    double P(int i, int j) const { return P_[i][j]; }
+    double P(int i, int j) const { return i <= j ? P_[i][j] : P_[j][i]; }
     void clear_state() { std::memset(x_, 0, sizeof x_); }
 
 private:
-    alignas(64) double P_[N][NP];  // column 15 is padding, always zero
+    // Entry (a, b) with a <= b holds P_ab; entries below the diagonal are
+    // stale except right after mirror_lower(). Column 15 is padding, zero.
+    void mirror_lower();
+    // Column i of P (rows 0..14) read from the upper triangle; out[15] = 0.
+    void column(int i, double* out) const;
+
+    alignas(64) double P_[N][NP];
     double x_[N];
     bool joseph_ = true;
 };
