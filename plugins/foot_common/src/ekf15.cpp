@@ -1,5 +1,15 @@
 #include "pednav_foot/ekf15.hpp"
 
+// The covariance kernels are also compiled for AVX (4 doubles per vector) and
+// picked at load time on x86-64 with GCC. Only the vector width differs: no
+// FMA contraction (AVX has none), no reassociation, so both versions give the
+// same bits.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__)
+#define PEDNAV_EKF15_CLONES __attribute__((target_clones("avx", "default")))
+#else
+#define PEDNAV_EKF15_CLONES
+#endif
+
 namespace pednav::foot {
 
 void Ekf15::reset_covariance(const double* diag) {
@@ -9,6 +19,7 @@ void Ekf15::reset_covariance(const double* diag) {
         for (int i = 0; i < N; ++i) P_[i][i] = diag[i];
 }
 
+PEDNAV_EKF15_CLONES
 void Ekf15::mirror_lower() {
     for (int a = 1; a < N; ++a) {
         double* __restrict pa = P_[a];
@@ -22,6 +33,7 @@ void Ekf15::column(int i, double* out) const {
     out[N] = 0.0;
 }
 
+PEDNAV_EKF15_CLONES
 void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // The products below read whole rows of P: restore the lower triangle.
     mirror_lower();
@@ -111,6 +123,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     }
 }
 
+PEDNAV_EKF15_CLONES
 void Ekf15::update_scalar(int i, double z, double var) {
     alignas(64) double c[NP];
     column(i, c);                                 // P H^T: a copy of column i
@@ -142,6 +155,7 @@ void Ekf15::update_scalar(int i, double z, double var) {
     }
 }
 
+PEDNAV_EKF15_CLONES
 void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     // C = P H^T (columns i0..i0+2, copies), S = H P H^T + R (a copied block).
     alignas(64) double CT[3][NP];
