@@ -9,6 +9,11 @@
 #else
 #define PEDNAV_EKF15_CLONES
 #endif
+#if defined(__GNUC__) && !defined(__clang__)
+#define PEDNAV_EKF15_UNROLL _Pragma("GCC unroll 16")
+#else
+#define PEDNAV_EKF15_UNROLL
+#endif
 
 namespace pednav::foot {
 
@@ -21,9 +26,18 @@ void Ekf15::reset_covariance(const double* diag) {
 
 PEDNAV_EKF15_CLONES
 void Ekf15::mirror_lower() {
-    for (int a = 1; a < N; ++a) {
-        double* __restrict pa = P_[a];
-        for (int b = 0; b < a; ++b) pa[b] = P_[b][a];
+    // propagate() reads whole rows ATT, BG, VEL, BA; the rows of POS are read
+    // from the upper triangle only, so their lower parts are not restored.
+    // Fully unrolled: one load and one store per entry.
+    PEDNAV_EKF15_UNROLL
+    for (int a = 1; a < POS; ++a) {
+        PEDNAV_EKF15_UNROLL
+        for (int b = 0; b < a; ++b) P_[a][b] = P_[b][a];
+    }
+    PEDNAV_EKF15_UNROLL
+    for (int a = VEL; a < N; ++a) {
+        PEDNAV_EKF15_UNROLL
+        for (int b = 0; b < a; ++b) P_[a][b] = P_[b][a];
     }
 }
 
@@ -103,9 +117,8 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
         double* pa = P_[ra];
         for (int o = 0; o < 6; ++o) {
             const int c = kOther[o];
-            const double v = pa[c] + na[c];
-            if (ra < c) pa[c] = v;
-            else P_[c][ra] = v;
+            if (ra < c) pa[c] = pa[c] + na[c];
+            else P_[c][ra] = P_[c][ra] + na[c];
         }
         for (int b = a; b < 9; ++b) {
             const int rb = kRows[b];
