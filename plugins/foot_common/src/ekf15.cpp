@@ -91,6 +91,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // Rd on BA) for VEL. Only the 3 x 3 blocks on or above the block diagonal
     // are computed (the loop below reads NG[a][b] for b >= a only).
     double NG[9][9];
+    PEDNAV_EKF15_UNROLL
     for (int a = 0; a < 9; ++a) {
         const double* na = Nm[a];
         const double t0 = na[ATT], t1 = na[ATT + 1], t2 = na[ATT + 2];
@@ -111,15 +112,18 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // entries against BG, BA get N once. Each value is written to the upper
     // triangle only (its one copy): exactly symmetric.
     static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
+    PEDNAV_EKF15_UNROLL
     for (int a = 0; a < 9; ++a) {
         const int ra = kRows[a];
         const double* na = Nm[a];
         double* pa = P_[ra];
+        PEDNAV_EKF15_UNROLL
         for (int o = 0; o < 6; ++o) {
             const int c = kOther[o];
             if (ra < c) pa[c] = pa[c] + na[c];
             else P_[c][ra] = P_[c][ra] + na[c];
         }
+        PEDNAV_EKF15_UNROLL
         for (int b = a; b < 9; ++b) {
             const int rb = kRows[b];
             pa[rb] = pa[rb] + (na[rb] + Nm[b][ra]) + NG[a][b];
@@ -161,6 +165,7 @@ void Ekf15::update_scalar(int i, double z, double var) {
     // Joseph form (I - K e_i^T) P (I - K e_i^T)^T + K var K^T (eq. (33)),
     // expanded for H = e_i: P + s K K^T - (K c^T + c K^T). Upper triangle
     // only (rows from an even column, as above): symmetric by construction.
+    PEDNAV_EKF15_UNROLL
     for (int a = 0; a < N; ++a) {
         const double ka = K[a], ca = c[a], ska = s * ka;
         double* __restrict pa = P_[a];
@@ -224,6 +229,7 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
             KT[j][k] = K[k][j];
         }
     for (int j = 0; j < 3; ++j) W[j][N] = KT[j][N] = 0.0;
+    PEDNAV_EKF15_UNROLL
     for (int a = 0; a < N; ++a) {
         const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
         const double c0 = C[a][0], c1 = C[a][1], c2 = C[a][2];
