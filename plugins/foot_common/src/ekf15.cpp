@@ -176,14 +176,14 @@ void Ekf15::update_scalar(int i, double z, double var) {
 PEDNAV_EKF15_CLONES
 void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     // C = P H^T (columns i0..i0+2, copies), S = H P H^T + R (a copied block).
+    // C, K and W are kept transposed (3 rows of 16) so that the loops over
+    // the states run along contiguous memory; their padding entries are zero
+    // (products of the zero padding of C).
     alignas(64) double CT[3][NP];
     for (int j = 0; j < 3; ++j) column(i0 + j, CT[j]);
-    double C[N][3];
-    for (int k = 0; k < N; ++k)
-        for (int j = 0; j < 3; ++j) C[k][j] = CT[j][k];
     double S[3][3];
     for (int r = 0; r < 3; ++r)
-        for (int j = 0; j < 3; ++j) S[r][j] = C[i0 + r][j];
+        for (int j = 0; j < 3; ++j) S[r][j] = CT[j][i0 + r];
     for (int j = 0; j < 3; ++j) S[j][j] += var[j];
     // S^-1 by the adjugate (S symmetric positive definite).
     const double a00 = S[1][1] * S[2][2] - S[1][2] * S[2][1];
@@ -202,18 +202,20 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     Si[1][0] = Si[0][1];
     Si[2][0] = Si[0][2];
     Si[2][1] = Si[1][2];
-    // K = C S^-1 (eq. (31)); M = K S for the Joseph term K S K^T.
-    double K[N][3];
-    for (int k = 0; k < N; ++k)
-        for (int j = 0; j < 3; ++j) K[k][j] = C[k][0] * Si[0][j] + C[k][1] * Si[1][j] + C[k][2] * Si[2][j];
+    // K = C S^-1 (eq. (31)), as K^T.
+    alignas(64) double KT[3][NP];
+    for (int j = 0; j < 3; ++j) {
+        const double s0 = Si[0][j], s1 = Si[1][j], s2 = Si[2][j];
+        for (int k = 0; k < NP; ++k) KT[j][k] = CT[0][k] * s0 + CT[1][k] * s1 + CT[2][k] * s2;
+    }
     // State (eq. (30)).
     const double e0 = z[0] - x_[i0], e1 = z[1] - x_[i0 + 1], e2 = z[2] - x_[i0 + 2];
-    for (int k = 0; k < N; ++k) x_[k] += K[k][0] * e0 + K[k][1] * e1 + K[k][2] * e2;
+    for (int k = 0; k < N; ++k) x_[k] += KT[0][k] * e0 + KT[1][k] * e1 + KT[2][k] * e2;
     if (!joseph_) {
         // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, rows
         // from an even column.
         for (int a = 0; a < N; ++a) {
-            const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
+            const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
             double* __restrict pa = P_[a];
             for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] - (k0 * CT[0][b] + k1 * CT[1][b] + k2 * CT[2][b]);
         }
@@ -222,17 +224,15 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     // Joseph form (eq. (33)): P - K C^T - C K^T + K S K^T
     //   = P + K W - C K^T with W = S K^T - C^T (3 x 15). Upper triangle only,
     // rows from an even column (the padding column stays zero).
-    alignas(64) double W[3][NP], KT[3][NP];
-    for (int k = 0; k < N; ++k)
-        for (int j = 0; j < 3; ++j) {
-            W[j][k] = S[j][0] * K[k][0] + S[j][1] * K[k][1] + S[j][2] * K[k][2] - C[k][j];
-            KT[j][k] = K[k][j];
-        }
-    for (int j = 0; j < 3; ++j) W[j][N] = KT[j][N] = 0.0;
+    alignas(64) double W[3][NP];
+    for (int j = 0; j < 3; ++j) {
+        const double s0 = S[j][0], s1 = S[j][1], s2 = S[j][2];
+        for (int k = 0; k < NP; ++k) W[j][k] = s0 * KT[0][k] + s1 * KT[1][k] + s2 * KT[2][k] - CT[j][k];
+    }
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < N; ++a) {
-        const double k0 = K[a][0], k1 = K[a][1], k2 = K[a][2];
-        const double c0 = C[a][0], c1 = C[a][1], c2 = C[a][2];
+        const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
+        const double c0 = CT[0][a], c1 = CT[1][a], c2 = CT[2][a];
         double* __restrict pa = P_[a];
         for (int b = a & ~1; b < NP; ++b)
             pa[b] = pa[b] + ((k0 * W[0][b] + k1 * W[1][b] + k2 * W[2][b]) -
