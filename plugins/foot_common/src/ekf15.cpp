@@ -89,23 +89,39 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // N_G = N G^T restricted to rows/cols (ATT, POS, VEL); column b of G^T is
     // row b of G: (Rd on BG) for ATT, (dt on VEL) for POS, (-skew(f) dt on ATT,
     // Rd on BA) for VEL. Only the 3 x 3 blocks on or above the block diagonal
-    // are computed (the loop below reads NG[a][b] for b >= a only).
-    double NG[9][9];
+    // are computed (the loop below reads NG[a][b] for b >= a only); the VEL
+    // columns, needed for all nine rows, as vectors over a (NV[r][a] = NG[a][6 + r])
+    // from the ATT and BA columns of N copied into rows (NT, padded to 12).
+    double NG[9][6];
     PEDNAV_EKF15_UNROLL
-    for (int a = 0; a < 9; ++a) {
+    for (int a = 0; a < 6; ++a) {
         const double* na = Nm[a];
-        const double t0 = na[ATT], t1 = na[ATT + 1], t2 = na[ATT + 2];
-        const double b0 = na[BA], b1 = na[BA + 1], b2 = na[BA + 2];
         double* ng = NG[a];
         if (a < 3) {
             const double g0 = na[BG], g1 = na[BG + 1], g2 = na[BG + 2];
             for (int r = 0; r < 3; ++r) ng[r] = Rd[r][0] * g0 + Rd[r][1] * g1 + Rd[r][2] * g2;
         }
-        if (a < 6)
-            for (int r = 0; r < 3; ++r) ng[3 + r] = dt * na[VEL + r];
-        ng[6] = fz * t1 - fy * t2 + Rd[0][0] * b0 + Rd[0][1] * b1 + Rd[0][2] * b2;
-        ng[7] = -fz * t0 + fx * t2 + Rd[1][0] * b0 + Rd[1][1] * b1 + Rd[1][2] * b2;
-        ng[8] = fy * t0 - fx * t1 + Rd[2][0] * b0 + Rd[2][1] * b1 + Rd[2][2] * b2;
+        for (int r = 0; r < 3; ++r) ng[3 + r] = dt * na[VEL + r];
+    }
+    alignas(64) double NT[6][12];
+    PEDNAV_EKF15_UNROLL
+    for (int a = 0; a < 12; ++a)
+        for (int j = 0; j < 3; ++j) {
+            NT[j][a] = a < 9 ? Nm[a][ATT + j] : 0.0;
+            NT[3 + j][a] = a < 9 ? Nm[a][BA + j] : 0.0;
+        }
+    alignas(64) double NV[3][12];
+    {
+        const double r00 = Rd[0][0], r01 = Rd[0][1], r02 = Rd[0][2];
+        const double r10 = Rd[1][0], r11 = Rd[1][1], r12 = Rd[1][2];
+        const double r20 = Rd[2][0], r21 = Rd[2][1], r22 = Rd[2][2];
+        for (int a = 0; a < 12; ++a) {
+            const double t0 = NT[0][a], t1 = NT[1][a], t2 = NT[2][a];
+            const double b0 = NT[3][a], b1 = NT[4][a], b2 = NT[5][a];
+            NV[0][a] = fz * t1 - fy * t2 + r00 * b0 + r01 * b1 + r02 * b2;
+            NV[1][a] = -fz * t0 + fx * t2 + r10 * b0 + r11 * b1 + r12 * b2;
+            NV[2][a] = fy * t0 - fx * t1 + r20 * b0 + r21 * b1 + r22 * b2;
+        }
     }
     // P += N + N^T + N_G. Entries between the changed rows (ATT, POS, VEL) add
     // N(a, b) + N(b, a), a commutative sum, and N_G from its upper triangle;
@@ -126,7 +142,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
         PEDNAV_EKF15_UNROLL
         for (int b = a; b < 9; ++b) {
             const int rb = kRows[b];
-            pa[rb] = pa[rb] + (na[rb] + Nm[b][ra]) + NG[a][b];
+            pa[rb] = pa[rb] + (na[rb] + Nm[b][ra]) + (b < 6 ? NG[a][b] : NV[b - 6][a]);
         }
     }
     // Q (isotropic densities, so R Q R^T = Q).
