@@ -171,6 +171,7 @@ void Ekf15::update_scalar(int i, double z, double var) {
         // P - K c^T: entry (a, b) = P_ab - (c_a c_b) / s, upper triangle.
         // Rows start at an even column (two-wide vectors); the one entry
         // below the diagonal that this touches is stale anyway.
+        PEDNAV_EKF15_UNROLL
         for (int a = 0; a < N; ++a) {
             const double ca = c[a] * inv;
             double* __restrict pa = P_[a];
@@ -230,6 +231,7 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     if (!joseph_) {
         // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, rows
         // from an even column.
+        PEDNAV_EKF15_UNROLL
         for (int a = 0; a < N; ++a) {
             const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
             double* __restrict pa = P_[a];
