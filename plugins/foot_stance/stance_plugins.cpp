@@ -15,6 +15,15 @@ using pednav::foot::StanceDetector;
 // is larger, so the windows hold at any rate up to it.
 double capacity_rate(const CreateContext& ctx) { return std::max(2.0 * ctx.imu_rate_hz, 1000.0); }
 
+// The window parameters both detectors share (defaults from the detector's config).
+void read_windows(Params& p, pednav::foot::StanceWindows& w) {
+    w.window_s = p.number("window_s", w.window_s, 0.0, 2.0);
+    w.median_window_s = p.number("median_window_s", w.median_window_s, 0.0, 2.0);
+    w.adaptive_window_s = p.number("adaptive_window_s", w.adaptive_window_s, 0.0, 10.0);
+    w.adaptive_ratio = p.number("adaptive_ratio", w.adaptive_ratio, 1.0, 1e6);
+    w.adaptive_max = p.number("adaptive_max", w.adaptive_max, 0.0, 1e12);
+}
+
 class StanceBase : public StepDetector {
 public:
     static constexpr uint64_t kConsumes = PN_REC_MASK(PN_REC_IMU);
@@ -57,11 +66,7 @@ public:
         c.accel_max_mps2 = p.number("accel_max_mps2", c.accel_max_mps2, 0.0, 100.0);
         c.accel_std_max_mps2 = p.number("accel_std_max_mps2", c.accel_std_max_mps2, 0.0, 100.0);
         c.gyro_max_radps = p.number("gyro_max_radps", c.gyro_max_radps, 0.0, 100.0);
-        c.window_s = p.number("window_s", c.window_s, 0.0, 2.0);
-        c.median_window_s = p.number("median_window_s", c.median_window_s, 0.0, 2.0);
-        c.adaptive_window_s = p.number("adaptive_window_s", c.adaptive_window_s, 0.0, 10.0);
-        c.adaptive_ratio = p.number("adaptive_ratio", c.adaptive_ratio, 1.0, 1e6);
-        c.adaptive_max = p.number("adaptive_max", c.adaptive_max, 0.0, 1e12);
+        read_windows(p, c);
         if (c.accel_min_mps2 >= c.accel_max_mps2)
             Params::fail("accel_max_mps2", "must be greater than accel_min_mps2");
         detector_ = std::make_unique<StanceDetector>(c, capacity_rate(ctx));
@@ -85,11 +90,7 @@ public:
         c.gyro_sd_radps = p.number("gyro_sd_radps", c.gyro_sd_radps, 1e-6, 100.0);
         c.threshold = p.number("threshold", c.threshold, 0.0, 1e12);
         c.gravity_mps2 = p.number("gravity_mps2", c.gravity_mps2, 0.0, 20.0);
-        c.window_s = p.number("window_s", c.window_s, 0.0, 2.0);
-        c.adaptive_window_s = p.number("adaptive_window_s", c.adaptive_window_s, 0.0, 10.0);
-        c.adaptive_ratio = p.number("adaptive_ratio", c.adaptive_ratio, 1.0, 1e6);
-        c.adaptive_max = p.number("adaptive_max", c.adaptive_max, 0.0, 1e12);
-        c.median_window_s = p.number("median_window_s", c.median_window_s, 0.0, 2.0);
+        read_windows(p, c);
         detector_ = std::make_unique<StanceDetector>(c, capacity_rate(ctx));
     }
 };

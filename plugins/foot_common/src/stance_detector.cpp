@@ -8,30 +8,25 @@ namespace {
 int64_t half_ns(double window_s) { return static_cast<int64_t>(std::llround(window_s * 0.5e9)); }
 }  // namespace
 
-StanceDetector::StanceDetector(const MultiConditionConfig& c, double max_rate_hz)
-    : kind_(Kind::MultiCondition),
-      multi_(c),
-      stat_(half_ns(c.window_s), detail::capacity_for(c.window_s, max_rate_hz)),
-      adapt_(half_ns(c.adaptive_window_s), detail::capacity_for(c.adaptive_window_s, max_rate_hz)),
-      vote_(half_ns(c.median_window_s), detail::capacity_for(c.median_window_s, max_rate_hz)),
-      adaptive_(c.adaptive_window_s > 0),
-      adaptive_ratio_(c.adaptive_ratio),
-      adaptive_max_(c.adaptive_max) {
-    stat_.acc().is_shoe = false;
-    adapt_.acc().init(detail::capacity_for(c.adaptive_window_s, max_rate_hz));
+StanceDetector::StanceDetector(Kind kind, const StanceWindows& w, double max_rate_hz)
+    : kind_(kind),
+      stat_(half_ns(w.window_s), detail::capacity_for(w.window_s, max_rate_hz)),
+      adapt_(half_ns(w.adaptive_window_s), detail::capacity_for(w.adaptive_window_s, max_rate_hz)),
+      vote_(half_ns(w.median_window_s), detail::capacity_for(w.median_window_s, max_rate_hz)),
+      adaptive_(w.adaptive_window_s > 0),
+      adaptive_ratio_(w.adaptive_ratio),
+      adaptive_max_(w.adaptive_max) {
+    stat_.acc().is_shoe = kind == Kind::Shoe;
+    adapt_.acc().init(detail::capacity_for(w.adaptive_window_s, max_rate_hz));
 }
 
-StanceDetector::StanceDetector(const ShoeConfig& c, double max_rate_hz)
-    : kind_(Kind::Shoe),
-      shoe_(c),
-      stat_(half_ns(c.window_s), detail::capacity_for(c.window_s, max_rate_hz)),
-      adapt_(half_ns(c.adaptive_window_s), detail::capacity_for(c.adaptive_window_s, max_rate_hz)),
-      vote_(half_ns(c.median_window_s), detail::capacity_for(c.median_window_s, max_rate_hz)),
-      adaptive_(c.adaptive_window_s > 0),
-      adaptive_ratio_(c.adaptive_ratio),
-      adaptive_max_(c.adaptive_max) {
-    stat_.acc().is_shoe = true;
-    adapt_.acc().init(detail::capacity_for(c.adaptive_window_s, max_rate_hz));
+StanceDetector::StanceDetector(const MultiConditionConfig& c, double max_rate_hz)
+    : StanceDetector(Kind::MultiCondition, c, max_rate_hz) {
+    multi_ = c;
+}
+
+StanceDetector::StanceDetector(const ShoeConfig& c, double max_rate_hz) : StanceDetector(Kind::Shoe, c, max_rate_hz) {
+    shoe_ = c;
 }
 
 bool StanceDetector::test(const detail::ImuElem& centre, double& statistic) const {

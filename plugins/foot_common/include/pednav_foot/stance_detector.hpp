@@ -25,18 +25,26 @@ struct StanceDecision {
 };
 
 // foot-imu-zupt-zaru-ekf sec. 2.3, eq. (16)-(23), windows in seconds.
-struct MultiConditionConfig {
+// The windows both detectors share: a centred window for the statistic, an
+// optional adaptive threshold over a longer centred window, a majority filter.
+struct StanceWindows {
+    double window_s;           // centred window of the statistic
+    double median_window_s;    // majority filter
+    double adaptive_window_s;  // centred window of the running minimum; 0 = fixed threshold only
+    double adaptive_ratio;     // also stance when the statistic <= ratio x that minimum...
+    double adaptive_max;       // ...and below this
+};
+
+struct MultiConditionConfig : StanceWindows {
     double accel_min_mps2 = 9.0;        // C1 lower bound on |a|, eq. (17)
     double accel_max_mps2 = 11.0;       // C1 upper bound on |a|
     double accel_std_max_mps2 = 0.5;    // C2: std of |a| over the window below this, eq. (20)
     double gyro_max_radps = 1.0;        // C3: |w| below this, eq. (22)
-    double window_s = 0.15;             // centred window of eq. (18)-(19) (paper: 31 samples at 100 Hz)
-    double median_window_s = 0.11;      // majority filter (paper: 11 samples at 100 Hz)
-    // Optional adaptive threshold (0 = the paper's fixed conditions only), as
-    // for SHOE, on the statistic max(std|a| / accel_std_max, |w| / gyro_max).
-    double adaptive_window_s = 0.0;
-    double adaptive_ratio = 2.0;
-    double adaptive_max = 4.0;
+    // Window of eq. (18)-(19) 0.15 s (paper: 31 samples at 100 Hz), majority
+    // filter 0.11 s (paper: 11 samples at 100 Hz). The adaptive threshold is
+    // off (the paper's fixed conditions only); when on, it works as for SHOE
+    // on the statistic max(std|a| / accel_std_max, |w| / gyro_max).
+    MultiConditionConfig() : StanceWindows{0.15, 0.11, 0.0, 2.0, 4.0} {}
 };
 
 // SHOE / GLRT detector (Skog, Handel, Nilsson, Rantakokko 2010, eq. (10)):
@@ -50,16 +58,13 @@ struct MultiConditionConfig {
 // also stance when T is within a factor adaptive_ratio of the smallest T in a
 // centred window of adaptive_window_s (longer than one gait cycle) and below
 // adaptive_max; the running minimum is a monotone deque, O(1) amortised.
-struct ShoeConfig {
+struct ShoeConfig : StanceWindows {
     double accel_sd_mps2 = 1.0;      // sigma_a
     double gyro_sd_radps = 0.5;      // sigma_w
     double threshold = 0.5;          // gamma (dimensionless, W-normalised)
     double gravity_mps2 = 0.0;       // g; 0 = the window's mean |a|
-    double window_s = 0.06;          // W in seconds
-    double adaptive_window_s = 1.0;  // 0 = fixed threshold only
-    double adaptive_ratio = 3.0;
-    double adaptive_max = 60.0;
-    double median_window_s = 0.05;   // majority filter
+    // W = 0.06 s, majority filter 0.05 s, adaptive threshold over 1 s.
+    ShoeConfig() : StanceWindows{0.06, 0.05, 1.0, 3.0, 60.0} {}
 };
 
 namespace detail {
@@ -186,6 +191,7 @@ public:
     bool test(const detail::ImuElem& centre, double& statistic) const;
 
 private:
+    StanceDetector(Kind kind, const StanceWindows& windows, double max_rate_hz);
     struct StatAcc {
         detail::MultiAcc multi;
         detail::ShoeAcc shoe;
