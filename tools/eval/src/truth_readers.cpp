@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <pednav_io/geo.hpp>
 
 #include "csv.hpp"
 
@@ -265,7 +266,7 @@ Truth read_ipin_posi(const std::string& path) {
     t.name = path;
     std::string line;
     size_t n = 0;
-    double lat0 = NAN, lon0 = NAN;
+    io::Origin origin;
     while (std::getline(in, line)) {
         ++n;
         if (line.rfind("POSI;", 0) != 0) continue;
@@ -274,14 +275,14 @@ Truth read_ipin_posi(const std::string& path) {
             throw std::runtime_error(path + ":" + std::to_string(n) + ": POSI needs t;counter;lat;lon;floor");
         const double time = to_double(f[1], path, n), lat = to_double(f[3], path, n),
                      lon = to_double(f[4], path, n);
-        if (!std::isfinite(lat0)) lat0 = lat, lon0 = lon;
-        // Local tangent plane about the first point (WGS-84 radii of curvature).
-        const double a = 6378137.0, e2 = 6.69437999014e-3, phi = lat0 * M_PI / 180.0;
-        const double w = std::sqrt(1.0 - e2 * std::sin(phi) * std::sin(phi));
+        // Local tangent plane about the first point.
+        if (!origin.known) origin = io::Origin{lat, lon, 0.0, true, 0};
+        double enu[3];
+        io::geodetic_to_enu(origin, lat, lon, 0.0, enu);
         TruthPoint p;
         p.t_s = time;
-        p.x_m = (lon - lon0) * M_PI / 180.0 * a / w * std::cos(phi);
-        p.y_m = (lat - lat0) * M_PI / 180.0 * a * (1.0 - e2) / (w * w * w);
+        p.x_m = enu[0];
+        p.y_m = enu[1];
         p.floor = static_cast<int>(to_double(f[5], path, n));
         p.has_floor = true;
         t.points.push_back(p);

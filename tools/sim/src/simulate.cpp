@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <pednav_io/geo.hpp>
 #include <pednav_sim/geo.hpp>
 
 #include "gait_plan.hpp"
@@ -112,7 +113,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
     const double baro_drift = err ? options.baro_drift_pa_per_s * rng_setup.normal() : 0.0;
     const Eigen::Vector3d b_earth = earth_field_enu(options);
     const Eigen::Vector3d g_enu(0.0, 0.0, -options.gravity_mps2);
-    const GeoOrigin origin{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m};
+    const io::Origin origin{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m, true, 0};
 
     const size_t n = static_cast<size_t>(std::floor(plan.end_s * options.rate_hz)) + 1;
     out.imu.reserve(n);
@@ -213,7 +214,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
                     p += gm +
                          options.gnss_white_h_m * Eigen::Vector3d(rng_gnss.normal(), rng_gnss.normal(), 0.0);
                 const double pe[3] = {p.x(), p.y(), p.z()};
-                enu_to_llh(origin, pe, g.lat_deg, g.lon_deg, g.height_m);
+                io::enu_to_geodetic(origin, pe, &g.lat_deg, &g.lon_deg, &g.height_m);
                 g.h_accuracy_m = err ? std::sqrt(2.0 * (options.gnss_sigma_h_m * options.gnss_sigma_h_m +
                                                         options.gnss_white_h_m * options.gnss_white_h_m))
                                      : 0.01;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include <pednav_io/geo.hpp>
 #include <pednav_sim/geo.hpp>
 #include <pednav_sim/simulate.hpp>
 
@@ -32,10 +33,10 @@ void make_dirs(const std::string& dir) {
     }
 }
 
-nlohmann::json lonlat(const GeoOrigin& o, double x, double y, double z) {
+nlohmann::json lonlat(const io::Origin& o, double x, double y, double z) {
     const double enu[3] = {x, y, z};
     double lat = 0.0, lon = 0.0, h = 0.0;
-    enu_to_llh(o, enu, lat, lon, h);
+    io::enu_to_geodetic(o, enu, &lat, &lon, &h);
     return {lon, lat};
 }
 
@@ -108,7 +109,7 @@ void write_outputs(const SimOutput& out, const Route& route, const std::string& 
     std::fclose(f);
 
     // Building map: walls and the route as GeoJSON LineStrings (WGS-84 lon, lat).
-    const GeoOrigin o{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m};
+    const io::Origin o{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m, true, 0};
     nlohmann::json fc = {{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
     for (const Wall& w : route.walls) {
         nlohmann::json coords = nlohmann::json::array();
