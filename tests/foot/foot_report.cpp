@@ -1,5 +1,5 @@
 // Prints the foot pipeline's accuracy on every shared foot recording, for
-// docs/foot-pipeline.md. Usage: foot_report [shoe|multicondition] [json merge patch]
+// docs/foot-pipeline.md. Usage: foot_report [shoe|multicondition] [json merge patch] [quick|tables|hupt]
 #include <cstdio>
 #include <string>
 
@@ -29,6 +29,33 @@ int main(int argc, char** argv) {
                     const Stats x = stats_of(ax), y = stats_of(ay);
                     std::printf("  %d dx cm min %.0f max %.0f mean %.0f sd %.0f | dy cm min %.0f max %.0f mean %.0f sd %.0f | mean err %.2f %%\n",
                                 n, x.min, x.max, x.mean, x.sd, y.min, y.max, y.mean, y.sd, s.mean_pct);
+                }
+            }
+            return 0;
+        }
+        if (argc > 3 && std::string(argv[3]) == "hupt") {
+            // Mean |height error| at the stance samples, ZUPT only vs the
+            // preset (HUPT with the level memory), 200 Hz, four seeds.
+            nlohmann::json p0 = patch;
+            p0.merge_patch(ekf_patch({{"hupt", false}}));
+            const std::string zupt_cfg = foot_config(p0, 0.0);
+            for (const char* route : {"stairs", "building_tour"}) {
+                for (double errors : {1.0, 5.0}) {
+                    for (uint64_t seed = 1; seed <= 4; ++seed) {
+                        SimCase c;
+                        c.route = route;
+                        c.error_scale = errors;
+                        c.seed = seed;
+                        c.mounting_rpy_deg[0] = 20;
+                        c.mounting_rpy_deg[1] = -30;
+                        c.mounting_rpy_deg[2] = 10;
+                        const SimScore z = score_sim(c, zupt_cfg);
+                        const SimScore h = score_sim(c, cfg);
+                        std::printf("hupt %-13s errors x%.0f seed %llu  mean |dz| ZUPT %.3f m  HUPT %.3f m  cut %3.0f %%  "
+                                    "final ZUPT %.3f m  HUPT %.3f m\n",
+                                    route, errors, static_cast<unsigned long long>(seed), z.mean_err_z_m, h.mean_err_z_m,
+                                    100.0 * (1.0 - h.mean_err_z_m / z.mean_err_z_m), z.final_err_z_m, h.final_err_z_m);
+                    }
                 }
             }
             return 0;

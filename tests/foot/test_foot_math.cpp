@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <pednav_foot/ekf15.hpp>
+#include <pednav_foot/level_memory.hpp>
 #include <pednav_foot/so3.hpp>
 #include <pednav_foot/stance_detector.hpp>
 #include <pednav_foot/strapdown.hpp>
@@ -352,4 +353,21 @@ TEST_CASE("EKF block update of three selected states equals three scalar updates
     }
     CHECK(dx < 1e-12);
     CHECK(dp < 1e-12);
+}
+
+TEST_CASE("level memory: a floor reached again gets its first height back, a new one is remembered") {
+    LevelMemory m(0.1);
+    CHECK(m.arrive(0.0) == 0.0);   // start floor
+    CHECK(m.arrive(1.52) == 1.52); // landing: new
+    CHECK(m.arrive(3.05) == 3.05); // floor 1: new
+    CHECK(m.size() == 3);
+    CHECK(m.arrive(1.58) == 1.52); // the landing again, 6 cm off
+    CHECK(m.arrive(-0.07) == 0.0); // the start floor again
+    CHECK(m.arrive(0.17) == 0.17); // one riser above the start floor: another level
+    CHECK(m.arrive(0.09) == 0.17); // nearest of the two within reach
+    CHECK(m.size() == 4);
+    LevelMemory off(0.0);
+    CHECK(off.arrive(1.0) == 1.0);
+    CHECK(off.arrive(1.0) == 1.0);
+    CHECK(off.size() == 0);
 }

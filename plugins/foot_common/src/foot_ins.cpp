@@ -6,7 +6,7 @@
 
 namespace pednav::foot {
 
-FootIns::FootIns(const FootInsConfig& c) : cfg_(c) {
+FootIns::FootIns(const FootInsConfig& c) : cfg_(c), levels_(c.level_match_m) {
     noise_.gyro_psd = c.gyro_noise_radps_per_sqrthz * c.gyro_noise_radps_per_sqrthz;
     noise_.accel_psd = c.accel_noise_mps2_per_sqrthz * c.accel_noise_mps2_per_sqrthz;
     noise_.gyro_bias_psd = c.gyro_bias_walk_radps_per_sqrts * c.gyro_bias_walk_radps_per_sqrts;
@@ -178,13 +178,15 @@ void FootIns::begin_stance(int64_t t_ns) {
     stance_start_t_ = t_ns;
     if (!have_anchor_) {
         level_step_ = true;
-        h_ref_ = p_.z();
+        h_ref_ = levels_.arrive(p_.z());
     } else if (moving_s_ >= cfg_.min_swing_s) {
         // foot-imu-height-update-hupt sec. 2.1: a heel strike (toe-up pitch
         // before the landing) marks a level-floor step; the height then equals
-        // the height of the previous stance (eq. (5)).
+        // the height of the previous stance (eq. (5)), or, for the first level
+        // step after stairs, that of a level stood on before at about it.
+        const bool after_stairs = !level_step_;
         level_step_ = max_toe_up_rad_ >= cfg_.heel_strike_deg * M_PI / 180.0;
-        h_ref_ = anchor_pos_.z();
+        h_ref_ = level_step_ && after_stairs ? levels_.arrive(anchor_pos_.z()) : anchor_pos_.z();
     }
 }
 

@@ -11,7 +11,8 @@
 // then P is propagated (eq. (32)) and, in stance, the measurements
 //   ZUPT  z = 0 - v_k          = dv + n     (eq. (34)-(35), velocity rows)
 //   ZARU  z = w_k - bg         = dbg + n    (angular rate rows)
-//   HUPT  z = h_ref - p_k,z    = dp_z + n   (foot-imu-height-update-hupt eq. (5))
+//   HUPT  z = h_ref - p_k,z    = dp_z + n   (foot-imu-height-update-hupt eq. (5);
+//         after stairs h_ref is a level stood on before when one is near, level_memory.hpp)
 // are applied as scalar updates; the estimate is injected (eq. (12)-(14) with
 // this file's sign convention) and the error state reset to zero. The attitude
 // and gyro-bias parts are returned as a correction for the attitude estimator.
@@ -20,6 +21,7 @@
 #include <cstdint>
 
 #include "ekf15.hpp"
+#include "level_memory.hpp"
 
 namespace pednav::foot {
 
@@ -45,6 +47,7 @@ struct FootInsConfig {
     double zaru_max_radps = 0.1;      // ZARU only while |w - bg| is below this (a rolling foot is not still)
     double zupt_lever_m = 0.3;        // ZUPT sd grows by this times |w - bg| (sensor ahead of the pivot)
     double hupt_sd_m = 0.01;
+    double level_match_m = 0.1;       // a level reached after stairs within this of one stood on before is that level
     // Stride segmentation and level/stairs classification.
     double min_stance_s = 0.0;        // shorter stances do not end a stride
     double min_swing_s = 0.15;        // motion between counted stances
@@ -134,6 +137,7 @@ private:
     double max_toe_up_rad_ = 0;     // largest toe-up pitch since the last counted stance
     bool level_step_ = true;        // class of the step that led to the current stance
     double h_ref_ = 0;              // HUPT reference height
+    LevelMemory levels_;            // heights of the level floors stood on
     int stride_index_ = 0;
     StrideOut stride_{};
 };
