@@ -41,11 +41,6 @@ void Ekf15::mirror_lower() {
     }
 }
 
-void Ekf15::column(int i, double* out) const {
-    for (int k = 0; k < i; ++k) out[k] = P_[k][i];
-    for (int k = i; k < N; ++k) out[k] = P_[i][k];
-    out[N] = 0.0;
-}
 
 PEDNAV_EKF15_CLONES
 void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
@@ -156,48 +151,76 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     }
 }
 
-PEDNAV_EKF15_CLONES
-void Ekf15::update_scalar(int i, double z, double var) {
+namespace {
+
+// Four doubles as one value (GCC/Clang vector extension): one AVX register in
+// the AVX clones, two SSE2 registers otherwise. Element-wise IEEE arithmetic
+// in the order written, so the results are the bits of the scalar expressions.
+typedef double v4d __attribute__((vector_size(32)));
+
+}  // namespace
+
+// Load and store four doubles at a 32-byte aligned address (macros, not
+// functions: a vector passed by value would change the ABI between clones).
+#define ld4(p) (*reinterpret_cast<const v4d*>(p))
+#define st4(p, v) (*reinterpret_cast<v4d*>(p) = (v))
+
+// The update kernels are written once, always inlined, and called with the
+// state index as a literal for the indices the foot INS uses (ZUPT at VEL,
+// ZARU at BG, HUPT at POS + 2), so that every loop has constant bounds.
+#define PEDNAV_EKF15_INLINE inline __attribute__((always_inline))
+
+PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
     alignas(64) double c[NP];
-    column(i, c);                                 // P H^T: a copy of column i
+    column_inline(i, c);                          // P H^T: a copy of column i
     const double s = c[i] + var;                  // H P H^T + R: a copy of P_ii
     if (!(s > 0)) return;
     alignas(64) double K[NP];
     const double inv = 1.0 / s;
-    for (int k = 0; k < NP; ++k) K[k] = c[k] * inv;
+    for (int k = 0; k < NP; k += 4) st4(K + k, ld4(c + k) * inv);
     const double innov = z - x_[i];
-    for (int k = 0; k < N; ++k) x_[k] += K[k] * innov;
+    for (int k = 0; k < NP; k += 4) st4(x_ + k, ld4(x_ + k) + ld4(K + k) * innov);
     if (!joseph_) {
         // P - K c^T: entry (a, b) = P_ab - (c_a c_b) / s, upper triangle.
-        // Rows start at an even column (two-wide vectors); the one entry
-        // below the diagonal that this touches is stale anyway.
+        // Rows start at a multiple of 4 (four-wide vectors); the entries
+        // below the diagonal that this touches are stale anyway.
         PEDNAV_EKF15_UNROLL
         for (int a = 0; a < N; ++a) {
             const double ca = c[a] * inv;
-            double* __restrict pa = P_[a];
-            for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] - ca * c[b];
+            double* pa = P_[a];
+            PEDNAV_EKF15_UNROLL
+            for (int b = a & ~3; b < NP; b += 4) st4(pa + b, ld4(pa + b) - ca * ld4(c + b));
         }
         return;
     }
     // Joseph form (I - K e_i^T) P (I - K e_i^T)^T + K var K^T (eq. (33)),
     // expanded for H = e_i: P + s K K^T - (K c^T + c K^T). Upper triangle
-    // only (rows from an even column, as above): symmetric by construction.
+    // only (rows from a multiple of 4, as above): symmetric by construction.
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < N; ++a) {
         const double ka = K[a], ca = c[a], ska = s * ka;
-        double* __restrict pa = P_[a];
-        for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] + (ska * K[b] - (ka * c[b] + ca * K[b]));
+        double* pa = P_[a];
+        PEDNAV_EKF15_UNROLL
+        for (int b = a & ~3; b < NP; b += 4) {
+            const v4d Kb = ld4(K + b);
+            st4(pa + b, ld4(pa + b) + (ska * Kb - (ka * ld4(c + b) + ca * Kb)));
+        }
     }
 }
 
 PEDNAV_EKF15_CLONES
-void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
+void Ekf15::update_scalar(int i, double z, double var) {
+    if (i == POS + 2) scalar_kernel(POS + 2, z, var);
+    else scalar_kernel(i, z, var);
+}
+
+PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const double var[3]) {
     // C = P H^T (columns i0..i0+2, copies), S = H P H^T + R (a copied block).
     // C, K and W are kept transposed (3 rows of 16) so that the loops over
     // the states run along contiguous memory; their padding entries are zero
     // (products of the zero padding of C).
     alignas(64) double CT[3][NP];
-    for (int j = 0; j < 3; ++j) column(i0 + j, CT[j]);
+    for (int j = 0; j < 3; ++j) column_inline(i0 + j, CT[j]);
     double S[3][3];
     for (int r = 0; r < 3; ++r)
         for (int j = 0; j < 3; ++j) S[r][j] = CT[j][i0 + r];
@@ -221,41 +244,59 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     Si[2][1] = Si[1][2];
     // K = C S^-1 (eq. (31)), as K^T.
     alignas(64) double KT[3][NP];
+    PEDNAV_EKF15_UNROLL
     for (int j = 0; j < 3; ++j) {
         const double s0 = Si[0][j], s1 = Si[1][j], s2 = Si[2][j];
-        for (int k = 0; k < NP; ++k) KT[j][k] = CT[0][k] * s0 + CT[1][k] * s1 + CT[2][k] * s2;
+        PEDNAV_EKF15_UNROLL
+        for (int k = 0; k < NP; k += 4)
+            st4(KT[j] + k, ld4(CT[0] + k) * s0 + ld4(CT[1] + k) * s1 + ld4(CT[2] + k) * s2);
     }
-    // State (eq. (30)).
+    // State (eq. (30)); x_[15] is padding and stays zero.
     const double e0 = z[0] - x_[i0], e1 = z[1] - x_[i0 + 1], e2 = z[2] - x_[i0 + 2];
-    for (int k = 0; k < N; ++k) x_[k] += KT[0][k] * e0 + KT[1][k] * e1 + KT[2][k] * e2;
+    PEDNAV_EKF15_UNROLL
+    for (int k = 0; k < NP; k += 4)
+        st4(x_ + k, ld4(x_ + k) + (ld4(KT[0] + k) * e0 + ld4(KT[1] + k) * e1 + ld4(KT[2] + k) * e2));
     if (!joseph_) {
         // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, rows
-        // from an even column.
+        // from a multiple of 4.
         PEDNAV_EKF15_UNROLL
         for (int a = 0; a < N; ++a) {
             const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
-            double* __restrict pa = P_[a];
-            for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] - (k0 * CT[0][b] + k1 * CT[1][b] + k2 * CT[2][b]);
+            double* pa = P_[a];
+            PEDNAV_EKF15_UNROLL
+            for (int b = a & ~3; b < NP; b += 4)
+                st4(pa + b, ld4(pa + b) - (k0 * ld4(CT[0] + b) + k1 * ld4(CT[1] + b) + k2 * ld4(CT[2] + b)));
         }
         return;
     }
     // Joseph form (eq. (33)): P - K C^T - C K^T + K S K^T
     //   = P + K W - C K^T with W = S K^T - C^T (3 x 15). Upper triangle only,
-    // rows from an even column (the padding column stays zero).
+    // rows from a multiple of 4 (the padding column stays zero).
     alignas(64) double W[3][NP];
+    PEDNAV_EKF15_UNROLL
     for (int j = 0; j < 3; ++j) {
         const double s0 = S[j][0], s1 = S[j][1], s2 = S[j][2];
-        for (int k = 0; k < NP; ++k) W[j][k] = s0 * KT[0][k] + s1 * KT[1][k] + s2 * KT[2][k] - CT[j][k];
+        PEDNAV_EKF15_UNROLL
+        for (int k = 0; k < NP; k += 4)
+            st4(W[j] + k, s0 * ld4(KT[0] + k) + s1 * ld4(KT[1] + k) + s2 * ld4(KT[2] + k) - ld4(CT[j] + k));
     }
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < N; ++a) {
         const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
         const double c0 = CT[0][a], c1 = CT[1][a], c2 = CT[2][a];
-        double* __restrict pa = P_[a];
-        for (int b = a & ~1; b < NP; ++b)
-            pa[b] = pa[b] + ((k0 * W[0][b] + k1 * W[1][b] + k2 * W[2][b]) -
-                             (c0 * KT[0][b] + c1 * KT[1][b] + c2 * KT[2][b]));
+        double* pa = P_[a];
+        PEDNAV_EKF15_UNROLL
+        for (int b = a & ~3; b < NP; b += 4)
+            st4(pa + b, ld4(pa + b) + ((k0 * ld4(W[0] + b) + k1 * ld4(W[1] + b) + k2 * ld4(W[2] + b)) -
+                                       (c0 * ld4(KT[0] + b) + c1 * ld4(KT[1] + b) + c2 * ld4(KT[2] + b))));
     }
+}
+
+PEDNAV_EKF15_CLONES
+void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
+    if (i0 == VEL) block3_kernel(VEL, z, var);
+    else if (i0 == BG) block3_kernel(BG, z, var);
+    else block3_kernel(i0, z, var);
 }
 
 }  // namespace pednav::foot
