@@ -15,6 +15,20 @@
 #define PEDNAV_EKF15_UNROLL
 #endif
 
+namespace {
+
+// Four doubles as one value (GCC/Clang vector extension): one AVX register in
+// the AVX clones, two SSE2 registers otherwise. Element-wise IEEE arithmetic
+// in the order written, so the results are the bits of the scalar expressions.
+typedef double v4d __attribute__((vector_size(32)));
+
+}  // namespace
+
+// Load and store four doubles at a 32-byte aligned address (macros, not
+// functions: a vector passed by value would change the ABI between clones).
+#define ld4(p) (*reinterpret_cast<const v4d*>(p))
+#define st4(p, v) (*reinterpret_cast<v4d*>(p) = (v))
+
 namespace pednav::foot {
 
 void Ekf15::reset_covariance(const double* diag) {
@@ -128,8 +142,10 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
         const int ra = kRows[a];
         const double* na = Nm[a];
         double* pa = P_[ra];
+        // BA columns (12..14, and the zero padding 15): one vector.
+        st4(pa + BA, ld4(pa + BA) + ld4(na + BA));
         PEDNAV_EKF15_UNROLL
-        for (int o = 0; o < 6; ++o) {
+        for (int o = 0; o < 3; ++o) {
             const int c = kOther[o];
             if (ra < c) pa[c] = pa[c] + na[c];
             else P_[c][ra] = P_[c][ra] + na[c];
@@ -151,19 +167,6 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     }
 }
 
-namespace {
-
-// Four doubles as one value (GCC/Clang vector extension): one AVX register in
-// the AVX clones, two SSE2 registers otherwise. Element-wise IEEE arithmetic
-// in the order written, so the results are the bits of the scalar expressions.
-typedef double v4d __attribute__((vector_size(32)));
-
-}  // namespace
-
-// Load and store four doubles at a 32-byte aligned address (macros, not
-// functions: a vector passed by value would change the ABI between clones).
-#define ld4(p) (*reinterpret_cast<const v4d*>(p))
-#define st4(p, v) (*reinterpret_cast<v4d*>(p) = (v))
 
 // The update kernels are written once, always inlined, and called with the
 // state index as a literal for the indices the foot INS uses (ZUPT at VEL,
@@ -185,11 +188,13 @@ PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
         // Rows start at a multiple of 4 (four-wide vectors); the entries
         // below the diagonal that this touches are stale anyway.
         PEDNAV_EKF15_UNROLL
-        for (int a = 0; a < N; ++a) {
-            const double ca = c[a] * inv;
-            double* pa = P_[a];
-            PEDNAV_EKF15_UNROLL
-            for (int b = a & ~3; b < NP; b += 4) st4(pa + b, ld4(pa + b) - ca * ld4(c + b));
+        for (int g = 0; g < N; g += 4) {
+                for (int a = g; a < g + 4 && a < N; ++a) {
+                const double ca = c[a] * inv;
+                double* pa = P_[a];
+                PEDNAV_EKF15_UNROLL
+                for (int b = g; b < NP; b += 4) st4(pa + b, ld4(pa + b) - ca * ld4(c + b));
+            }
         }
         return;
     }
@@ -197,13 +202,15 @@ PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
     // expanded for H = e_i: P + s K K^T - (K c^T + c K^T). Upper triangle
     // only (rows from a multiple of 4, as above): symmetric by construction.
     PEDNAV_EKF15_UNROLL
-    for (int a = 0; a < N; ++a) {
-        const double ka = K[a], ca = c[a], ska = s * ka;
-        double* pa = P_[a];
-        PEDNAV_EKF15_UNROLL
-        for (int b = a & ~3; b < NP; b += 4) {
-            const v4d Kb = ld4(K + b);
-            st4(pa + b, ld4(pa + b) + (ska * Kb - (ka * ld4(c + b) + ca * Kb)));
+    for (int g = 0; g < N; g += 4) {
+        for (int a = g; a < g + 4 && a < N; ++a) {
+            const double ka = K[a], ca = c[a], ska = s * ka;
+            double* pa = P_[a];
+            PEDNAV_EKF15_UNROLL
+            for (int b = g; b < NP; b += 4) {
+                const v4d Kb = ld4(K + b);
+                st4(pa + b, ld4(pa + b) + (ska * Kb - (ka * ld4(c + b) + ca * Kb)));
+            }
         }
     }
 }
@@ -260,12 +267,14 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
         // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, rows
         // from a multiple of 4.
         PEDNAV_EKF15_UNROLL
-        for (int a = 0; a < N; ++a) {
-            const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
-            double* pa = P_[a];
-            PEDNAV_EKF15_UNROLL
-            for (int b = a & ~3; b < NP; b += 4)
-                st4(pa + b, ld4(pa + b) - (k0 * ld4(CT[0] + b) + k1 * ld4(CT[1] + b) + k2 * ld4(CT[2] + b)));
+        for (int g = 0; g < N; g += 4) {
+                for (int a = g; a < g + 4 && a < N; ++a) {
+                const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
+                double* pa = P_[a];
+                PEDNAV_EKF15_UNROLL
+                for (int b = g; b < NP; b += 4)
+                    st4(pa + b, ld4(pa + b) - (k0 * ld4(CT[0] + b) + k1 * ld4(CT[1] + b) + k2 * ld4(CT[2] + b)));
+            }
         }
         return;
     }
@@ -281,14 +290,16 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
             st4(W[j] + k, s0 * ld4(KT[0] + k) + s1 * ld4(KT[1] + k) + s2 * ld4(KT[2] + k) - ld4(CT[j] + k));
     }
     PEDNAV_EKF15_UNROLL
-    for (int a = 0; a < N; ++a) {
-        const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
-        const double c0 = CT[0][a], c1 = CT[1][a], c2 = CT[2][a];
-        double* pa = P_[a];
-        PEDNAV_EKF15_UNROLL
-        for (int b = a & ~3; b < NP; b += 4)
-            st4(pa + b, ld4(pa + b) + ((k0 * ld4(W[0] + b) + k1 * ld4(W[1] + b) + k2 * ld4(W[2] + b)) -
-                                       (c0 * ld4(KT[0] + b) + c1 * ld4(KT[1] + b) + c2 * ld4(KT[2] + b))));
+    for (int g = 0; g < N; g += 4) {
+        for (int a = g; a < g + 4 && a < N; ++a) {
+            const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
+            const double c0 = CT[0][a], c1 = CT[1][a], c2 = CT[2][a];
+            double* pa = P_[a];
+            PEDNAV_EKF15_UNROLL
+            for (int b = g; b < NP; b += 4)
+                st4(pa + b, ld4(pa + b) + ((k0 * ld4(W[0] + b) + k1 * ld4(W[1] + b) + k2 * ld4(W[2] + b)) -
+                                           (c0 * ld4(KT[0] + b) + c1 * ld4(KT[1] + b) + c2 * ld4(KT[2] + b))));
+        }
     }
 }
 
