@@ -71,28 +71,21 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // -skew(f) dt = [[0, fz, -fy], [-fz, 0, fx], [fy, -fx, 0]]
 
     // N = G P, rows ATT, POS, VEL (9 x 16).
+    // Four columns at a time; the constants are broadcast once.
     alignas(64) double Nm[9][NP];
-    for (int r = 0; r < 3; ++r) {
-        double* __restrict na = Nm[r];
-        double* __restrict np = Nm[3 + r];
-        const double* pv = P_[VEL + r];
-        const double r0 = Rd[r][0], r1 = Rd[r][1], r2 = Rd[r][2];
-        for (int c = 0; c < NP; ++c) {
-            na[c] = r0 * P_[BG][c] + r1 * P_[BG + 1][c] + r2 * P_[BG + 2][c];
-            np[c] = dt * pv[c];
+    PEDNAV_EKF15_UNROLL
+    for (int c = 0; c < NP; c += 4) {
+        const v4d b0 = ld4(P_[BG] + c), b1 = ld4(P_[BG + 1] + c), b2 = ld4(P_[BG + 2] + c);
+        PEDNAV_EKF15_UNROLL
+        for (int r = 0; r < 3; ++r) {
+            st4(Nm[r] + c, Rd[r][0] * b0 + Rd[r][1] * b1 + Rd[r][2] * b2);
+            st4(Nm[3 + r] + c, dt * ld4(P_[VEL + r] + c));
         }
-    }
-    {
-        double* __restrict n0 = Nm[6];
-        double* __restrict n1 = Nm[7];
-        double* __restrict n2 = Nm[8];
-        for (int c = 0; c < NP; ++c) {
-            const double a0 = P_[ATT][c], a1 = P_[ATT + 1][c], a2 = P_[ATT + 2][c];
-            const double b0 = P_[BA][c], b1 = P_[BA + 1][c], b2 = P_[BA + 2][c];
-            n0[c] = fz * a1 - fy * a2 + Rd[0][0] * b0 + Rd[0][1] * b1 + Rd[0][2] * b2;
-            n1[c] = -fz * a0 + fx * a2 + Rd[1][0] * b0 + Rd[1][1] * b1 + Rd[1][2] * b2;
-            n2[c] = fy * a0 - fx * a1 + Rd[2][0] * b0 + Rd[2][1] * b1 + Rd[2][2] * b2;
-        }
+        const v4d a0 = ld4(P_[ATT] + c), a1 = ld4(P_[ATT + 1] + c), a2 = ld4(P_[ATT + 2] + c);
+        const v4d e0 = ld4(P_[BA] + c), e1 = ld4(P_[BA + 1] + c), e2 = ld4(P_[BA + 2] + c);
+        st4(Nm[6] + c, fz * a1 - fy * a2 + Rd[0][0] * e0 + Rd[0][1] * e1 + Rd[0][2] * e2);
+        st4(Nm[7] + c, -fz * a0 + fx * a2 + Rd[1][0] * e0 + Rd[1][1] * e1 + Rd[1][2] * e2);
+        st4(Nm[8] + c, fy * a0 - fx * a1 + Rd[2][0] * e0 + Rd[2][1] * e1 + Rd[2][2] * e2);
     }
     static constexpr int kRows[9] = {ATT, ATT + 1, ATT + 2, POS, POS + 1, POS + 2, VEL, VEL + 1, VEL + 2};
     // N_G = N G^T restricted to rows/cols (ATT, POS, VEL); column b of G^T is
