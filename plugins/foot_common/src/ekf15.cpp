@@ -11,7 +11,11 @@
 #endif
 #if defined(__GNUC__) && !defined(__clang__)
 #define PEDNAV_EKF15_UNROLL _Pragma("GCC unroll 16")
+// Keeps the compiler from hoisting the loads of later rows of P (it would
+// spill them): each row is loaded, updated and stored in turn.
+#define PEDNAV_EKF15_ROW_BARRIER __asm__ __volatile__("" ::: "memory");
 #else
+#define PEDNAV_EKF15_ROW_BARRIER
 #define PEDNAV_EKF15_UNROLL
 #endif
 
@@ -75,6 +79,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     alignas(64) double Nm[9][NP];
     PEDNAV_EKF15_UNROLL
     for (int c = 0; c < NP; c += 4) {
+        PEDNAV_EKF15_ROW_BARRIER
         const v4d b0 = ld4(P_[BG] + c), b1 = ld4(P_[BG + 1] + c), b2 = ld4(P_[BG + 2] + c);
         PEDNAV_EKF15_UNROLL
         for (int r = 0; r < 3; ++r) {
@@ -132,6 +137,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < 9; ++a) {
+        PEDNAV_EKF15_ROW_BARRIER
         const int ra = kRows[a];
         const double* na = Nm[a];
         double* pa = P_[ra];
@@ -183,6 +189,7 @@ PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
         PEDNAV_EKF15_UNROLL
         for (int g = 0; g < N; g += 4) {
                 for (int a = g; a < g + 4 && a < N; ++a) {
+                PEDNAV_EKF15_ROW_BARRIER
                 const double ca = c[a] * inv;
                 double* pa = P_[a];
                 PEDNAV_EKF15_UNROLL
@@ -197,6 +204,7 @@ PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
     PEDNAV_EKF15_UNROLL
     for (int g = 0; g < N; g += 4) {
         for (int a = g; a < g + 4 && a < N; ++a) {
+                PEDNAV_EKF15_ROW_BARRIER
             const double ka = K[a], ca = c[a], ska = s * ka;
             double* pa = P_[a];
             PEDNAV_EKF15_UNROLL
@@ -262,6 +270,7 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
         PEDNAV_EKF15_UNROLL
         for (int g = 0; g < N; g += 4) {
                 for (int a = g; a < g + 4 && a < N; ++a) {
+                PEDNAV_EKF15_ROW_BARRIER
                 const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
                 double* pa = P_[a];
                 PEDNAV_EKF15_UNROLL
@@ -285,6 +294,7 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
     PEDNAV_EKF15_UNROLL
     for (int g = 0; g < N; g += 4) {
         for (int a = g; a < g + 4 && a < N; ++a) {
+                PEDNAV_EKF15_ROW_BARRIER
             const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
             const double c0 = CT[0][a], c1 = CT[1][a], c2 = CT[2][a];
             double* pa = P_[a];
