@@ -98,7 +98,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // Rd on BA) for VEL. Only the 3 x 3 blocks on or above the block diagonal
     // are computed (the loop below reads NG[a][b] for b >= a only); the VEL
     // columns, needed for all nine rows, as vectors over a (NV[r][a] = NG[a][6 + r])
-    // from the ATT and BA columns of N copied into rows (NT, padded to 12).
+    // from the ATT and BA columns of N transposed into rows.
     double NG[9][6];
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < 6; ++a) {
@@ -110,24 +110,35 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
         }
         for (int r = 0; r < 3; ++r) ng[3 + r] = dt * na[VEL + r];
     }
-    alignas(64) double NT[6][12];
-    PEDNAV_EKF15_UNROLL
-    for (int a = 0; a < 12; ++a)
-        for (int j = 0; j < 3; ++j) {
-            NT[j][a] = a < 9 ? Nm[a][ATT + j] : 0.0;
-            NT[3 + j][a] = a < 9 ? Nm[a][BA + j] : 0.0;
-        }
+    // NV by 4 x 4 transposes of N's ATT and BA columns (rows 0-3, 4-7, 8 and
+    // zeros): lanes over a, the same expressions as scalars.
     alignas(64) double NV[3][12];
     {
+        typedef long long v4i __attribute__((vector_size(32)));
+        const v4i lo = {0, 4, 2, 6}, hi = {1, 5, 3, 7}, first = {0, 1, 4, 5}, second = {2, 3, 6, 7};
+        const v4d zero = {0.0, 0.0, 0.0, 0.0};
         const double r00 = Rd[0][0], r01 = Rd[0][1], r02 = Rd[0][2];
         const double r10 = Rd[1][0], r11 = Rd[1][1], r12 = Rd[1][2];
         const double r20 = Rd[2][0], r21 = Rd[2][1], r22 = Rd[2][2];
-        for (int a = 0; a < 12; ++a) {
-            const double t0 = NT[0][a], t1 = NT[1][a], t2 = NT[2][a];
-            const double b0 = NT[3][a], b1 = NT[4][a], b2 = NT[5][a];
-            NV[0][a] = fz * t1 - fy * t2 + r00 * b0 + r01 * b1 + r02 * b2;
-            NV[1][a] = -fz * t0 + fx * t2 + r10 * b0 + r11 * b1 + r12 * b2;
-            NV[2][a] = fy * t0 - fx * t1 + r20 * b0 + r21 * b1 + r22 * b2;
+        PEDNAV_EKF15_UNROLL
+        for (int k = 0; k < 12; k += 4) {
+            v4d t[3], e[3];
+            for (int part = 0; part < 2; ++part) {
+                const int col = part == 0 ? ATT : BA;
+                const v4d m0 = ld4(Nm[k] + col);
+                const v4d m1 = k + 1 < 9 ? ld4(Nm[k + 1] + col) : zero;
+                const v4d m2 = k + 2 < 9 ? ld4(Nm[k + 2] + col) : zero;
+                const v4d m3 = k + 3 < 9 ? ld4(Nm[k + 3] + col) : zero;
+                const v4d u0 = __builtin_shuffle(m0, m1, lo), u1 = __builtin_shuffle(m0, m1, hi);
+                const v4d u2 = __builtin_shuffle(m2, m3, lo), u3 = __builtin_shuffle(m2, m3, hi);
+                v4d* out = part == 0 ? t : e;
+                out[0] = __builtin_shuffle(u0, u2, first);
+                out[1] = __builtin_shuffle(u1, u3, first);
+                out[2] = __builtin_shuffle(u0, u2, second);
+            }
+            st4(NV[0] + k, fz * t[1] - fy * t[2] + r00 * e[0] + r01 * e[1] + r02 * e[2]);
+            st4(NV[1] + k, -fz * t[0] + fx * t[2] + r10 * e[0] + r11 * e[1] + r12 * e[2]);
+            st4(NV[2] + k, fy * t[0] - fx * t[1] + r20 * e[0] + r21 * e[1] + r22 * e[2]);
         }
     }
     // P += N + N^T + N_G. Entries between the changed rows (ATT, POS, VEL) add
