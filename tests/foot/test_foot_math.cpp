@@ -54,6 +54,23 @@ TEST_CASE("quaternion exp and log are inverse, also near zero") {
     }
 }
 
+TEST_CASE("atan2_fast agrees with libm's atan2 to about an ulp in every octant") {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    double max_err = 0.0;
+    for (int i = 0; i < 200000; ++i) {
+        double y = u(rng), x = u(rng);
+        if (i % 3 == 0) y *= 1e-4;
+        if (i % 5 == 0) x *= 1e-7;
+        max_err = std::max(max_err, std::abs(atan2_fast(y, x) - std::atan2(y, x)));
+    }
+    CHECK(max_err < 1e-15);
+    for (double y : {0.0, -0.0, 1.0, -1.0})
+        for (double x : {0.0, -0.0, 1.0, -1.0}) CHECK(atan2_fast(y, x) == std::atan2(y, x));
+    CHECK(atan2_fast(1.0, 1.0) == std::atan2(1.0, 1.0));
+    CHECK(std::isnan(atan2_fast(NAN, 1.0)));
+}
+
 TEST_CASE("level alignment and tilt-compensated magnetometer heading at several attitudes") {
     const double g = 9.81;
     const double dip = 64 * kDeg, field = 48.0;

@@ -11,9 +11,27 @@
 #endif
 #if defined(__GNUC__) && !defined(__clang__)
 #define PEDNAV_EKF15_UNROLL _Pragma("GCC unroll 16")
+// Keeps the compiler from hoisting the loads of later rows of P (it would
+// spill them): each row is loaded, updated and stored in turn.
+#define PEDNAV_EKF15_ROW_BARRIER __asm__ __volatile__("" ::: "memory");
 #else
+#define PEDNAV_EKF15_ROW_BARRIER
 #define PEDNAV_EKF15_UNROLL
 #endif
+
+namespace {
+
+// Four doubles as one value (GCC/Clang vector extension): one AVX register in
+// the AVX clones, two SSE2 registers otherwise. Element-wise IEEE arithmetic
+// in the order written, so the results are the bits of the scalar expressions.
+typedef double v4d __attribute__((vector_size(32)));
+
+}  // namespace
+
+// Load and store four doubles at a 32-byte aligned address (macros, not
+// functions: a vector passed by value would change the ABI between clones).
+#define ld4(p) (*reinterpret_cast<const v4d*>(p))
+#define st4(p, v) (*reinterpret_cast<v4d*>(p) = (v))
 
 namespace pednav::foot {
 
@@ -41,11 +59,6 @@ void Ekf15::mirror_lower() {
     }
 }
 
-void Ekf15::column(int i, double* out) const {
-    for (int k = 0; k < i; ++k) out[k] = P_[k][i];
-    for (int k = i; k < N; ++k) out[k] = P_[i][k];
-    out[N] = 0.0;
-}
 
 PEDNAV_EKF15_CLONES
 void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
@@ -62,28 +75,22 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // -skew(f) dt = [[0, fz, -fy], [-fz, 0, fx], [fy, -fx, 0]]
 
     // N = G P, rows ATT, POS, VEL (9 x 16).
+    // Four columns at a time; the constants are broadcast once.
     alignas(64) double Nm[9][NP];
-    for (int r = 0; r < 3; ++r) {
-        double* __restrict na = Nm[r];
-        double* __restrict np = Nm[3 + r];
-        const double* pv = P_[VEL + r];
-        const double r0 = Rd[r][0], r1 = Rd[r][1], r2 = Rd[r][2];
-        for (int c = 0; c < NP; ++c) {
-            na[c] = r0 * P_[BG][c] + r1 * P_[BG + 1][c] + r2 * P_[BG + 2][c];
-            np[c] = dt * pv[c];
+    PEDNAV_EKF15_UNROLL
+    for (int c = 0; c < NP; c += 4) {
+        PEDNAV_EKF15_ROW_BARRIER
+        const v4d b0 = ld4(P_[BG] + c), b1 = ld4(P_[BG + 1] + c), b2 = ld4(P_[BG + 2] + c);
+        PEDNAV_EKF15_UNROLL
+        for (int r = 0; r < 3; ++r) {
+            st4(Nm[r] + c, Rd[r][0] * b0 + Rd[r][1] * b1 + Rd[r][2] * b2);
+            st4(Nm[3 + r] + c, dt * ld4(P_[VEL + r] + c));
         }
-    }
-    {
-        double* __restrict n0 = Nm[6];
-        double* __restrict n1 = Nm[7];
-        double* __restrict n2 = Nm[8];
-        for (int c = 0; c < NP; ++c) {
-            const double a0 = P_[ATT][c], a1 = P_[ATT + 1][c], a2 = P_[ATT + 2][c];
-            const double b0 = P_[BA][c], b1 = P_[BA + 1][c], b2 = P_[BA + 2][c];
-            n0[c] = fz * a1 - fy * a2 + Rd[0][0] * b0 + Rd[0][1] * b1 + Rd[0][2] * b2;
-            n1[c] = -fz * a0 + fx * a2 + Rd[1][0] * b0 + Rd[1][1] * b1 + Rd[1][2] * b2;
-            n2[c] = fy * a0 - fx * a1 + Rd[2][0] * b0 + Rd[2][1] * b1 + Rd[2][2] * b2;
-        }
+        const v4d a0 = ld4(P_[ATT] + c), a1 = ld4(P_[ATT + 1] + c), a2 = ld4(P_[ATT + 2] + c);
+        const v4d e0 = ld4(P_[BA] + c), e1 = ld4(P_[BA + 1] + c), e2 = ld4(P_[BA + 2] + c);
+        st4(Nm[6] + c, fz * a1 - fy * a2 + Rd[0][0] * e0 + Rd[0][1] * e1 + Rd[0][2] * e2);
+        st4(Nm[7] + c, -fz * a0 + fx * a2 + Rd[1][0] * e0 + Rd[1][1] * e1 + Rd[1][2] * e2);
+        st4(Nm[8] + c, fy * a0 - fx * a1 + Rd[2][0] * e0 + Rd[2][1] * e1 + Rd[2][2] * e2);
     }
     static constexpr int kRows[9] = {ATT, ATT + 1, ATT + 2, POS, POS + 1, POS + 2, VEL, VEL + 1, VEL + 2};
     // N_G = N G^T restricted to rows/cols (ATT, POS, VEL); column b of G^T is
@@ -91,7 +98,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // Rd on BA) for VEL. Only the 3 x 3 blocks on or above the block diagonal
     // are computed (the loop below reads NG[a][b] for b >= a only); the VEL
     // columns, needed for all nine rows, as vectors over a (NV[r][a] = NG[a][6 + r])
-    // from the ATT and BA columns of N copied into rows (NT, padded to 12).
+    // from the ATT and BA columns of N transposed into rows.
     double NG[9][6];
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < 6; ++a) {
@@ -103,24 +110,35 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
         }
         for (int r = 0; r < 3; ++r) ng[3 + r] = dt * na[VEL + r];
     }
-    alignas(64) double NT[6][12];
-    PEDNAV_EKF15_UNROLL
-    for (int a = 0; a < 12; ++a)
-        for (int j = 0; j < 3; ++j) {
-            NT[j][a] = a < 9 ? Nm[a][ATT + j] : 0.0;
-            NT[3 + j][a] = a < 9 ? Nm[a][BA + j] : 0.0;
-        }
+    // NV by 4 x 4 transposes of N's ATT and BA columns (rows 0-3, 4-7, 8 and
+    // zeros): lanes over a, the same expressions as scalars.
     alignas(64) double NV[3][12];
     {
+        typedef long long v4i __attribute__((vector_size(32)));
+        const v4i lo = {0, 4, 2, 6}, hi = {1, 5, 3, 7}, first = {0, 1, 4, 5}, second = {2, 3, 6, 7};
+        const v4d zero = {0.0, 0.0, 0.0, 0.0};
         const double r00 = Rd[0][0], r01 = Rd[0][1], r02 = Rd[0][2];
         const double r10 = Rd[1][0], r11 = Rd[1][1], r12 = Rd[1][2];
         const double r20 = Rd[2][0], r21 = Rd[2][1], r22 = Rd[2][2];
-        for (int a = 0; a < 12; ++a) {
-            const double t0 = NT[0][a], t1 = NT[1][a], t2 = NT[2][a];
-            const double b0 = NT[3][a], b1 = NT[4][a], b2 = NT[5][a];
-            NV[0][a] = fz * t1 - fy * t2 + r00 * b0 + r01 * b1 + r02 * b2;
-            NV[1][a] = -fz * t0 + fx * t2 + r10 * b0 + r11 * b1 + r12 * b2;
-            NV[2][a] = fy * t0 - fx * t1 + r20 * b0 + r21 * b1 + r22 * b2;
+        PEDNAV_EKF15_UNROLL
+        for (int k = 0; k < 12; k += 4) {
+            v4d t[3], e[3];
+            for (int part = 0; part < 2; ++part) {
+                const int col = part == 0 ? ATT : BA;
+                const v4d m0 = ld4(Nm[k] + col);
+                const v4d m1 = k + 1 < 9 ? ld4(Nm[k + 1] + col) : zero;
+                const v4d m2 = k + 2 < 9 ? ld4(Nm[k + 2] + col) : zero;
+                const v4d m3 = k + 3 < 9 ? ld4(Nm[k + 3] + col) : zero;
+                const v4d u0 = __builtin_shuffle(m0, m1, lo), u1 = __builtin_shuffle(m0, m1, hi);
+                const v4d u2 = __builtin_shuffle(m2, m3, lo), u3 = __builtin_shuffle(m2, m3, hi);
+                v4d* out = part == 0 ? t : e;
+                out[0] = __builtin_shuffle(u0, u2, first);
+                out[1] = __builtin_shuffle(u1, u3, first);
+                out[2] = __builtin_shuffle(u0, u2, second);
+            }
+            st4(NV[0] + k, fz * t[1] - fy * t[2] + r00 * e[0] + r01 * e[1] + r02 * e[2]);
+            st4(NV[1] + k, -fz * t[0] + fx * t[2] + r10 * e[0] + r11 * e[1] + r12 * e[2]);
+            st4(NV[2] + k, fy * t[0] - fx * t[1] + r20 * e[0] + r21 * e[1] + r22 * e[2]);
         }
     }
     // P += N + N^T + N_G. Entries between the changed rows (ATT, POS, VEL) add
@@ -130,11 +148,14 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < 9; ++a) {
+        PEDNAV_EKF15_ROW_BARRIER
         const int ra = kRows[a];
         const double* na = Nm[a];
         double* pa = P_[ra];
+        // BA columns (12..14, and the zero padding 15): one vector.
+        st4(pa + BA, ld4(pa + BA) + ld4(na + BA));
         PEDNAV_EKF15_UNROLL
-        for (int o = 0; o < 6; ++o) {
+        for (int o = 0; o < 3; ++o) {
             const int c = kOther[o];
             if (ra < c) pa[c] = pa[c] + na[c];
             else P_[c][ra] = P_[c][ra] + na[c];
@@ -156,48 +177,69 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     }
 }
 
-PEDNAV_EKF15_CLONES
-void Ekf15::update_scalar(int i, double z, double var) {
+
+// The update kernels are written once, always inlined, and called with the
+// state index as a literal for the indices the foot INS uses (ZUPT at VEL,
+// ZARU at BG, HUPT at POS + 2), so that every loop has constant bounds.
+#define PEDNAV_EKF15_INLINE inline __attribute__((always_inline))
+
+PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
     alignas(64) double c[NP];
-    column(i, c);                                 // P H^T: a copy of column i
+    column_inline(i, c);                          // P H^T: a copy of column i
     const double s = c[i] + var;                  // H P H^T + R: a copy of P_ii
     if (!(s > 0)) return;
     alignas(64) double K[NP];
     const double inv = 1.0 / s;
-    for (int k = 0; k < NP; ++k) K[k] = c[k] * inv;
+    for (int k = 0; k < NP; k += 4) st4(K + k, ld4(c + k) * inv);
     const double innov = z - x_[i];
-    for (int k = 0; k < N; ++k) x_[k] += K[k] * innov;
+    for (int k = 0; k < NP; k += 4) st4(x_ + k, ld4(x_ + k) + ld4(K + k) * innov);
     if (!joseph_) {
         // P - K c^T: entry (a, b) = P_ab - (c_a c_b) / s, upper triangle.
-        // Rows start at an even column (two-wide vectors); the one entry
-        // below the diagonal that this touches is stale anyway.
+        // Rows start at a multiple of 4 (four-wide vectors); the entries
+        // below the diagonal that this touches are stale anyway.
         PEDNAV_EKF15_UNROLL
-        for (int a = 0; a < N; ++a) {
-            const double ca = c[a] * inv;
-            double* __restrict pa = P_[a];
-            for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] - ca * c[b];
+        for (int g = 0; g < N; g += 4) {
+                for (int a = g; a < g + 4 && a < N; ++a) {
+                PEDNAV_EKF15_ROW_BARRIER
+                const double ca = c[a] * inv;
+                double* pa = P_[a];
+                PEDNAV_EKF15_UNROLL
+                for (int b = g; b < NP; b += 4) st4(pa + b, ld4(pa + b) - ca * ld4(c + b));
+            }
         }
         return;
     }
     // Joseph form (I - K e_i^T) P (I - K e_i^T)^T + K var K^T (eq. (33)),
     // expanded for H = e_i: P + s K K^T - (K c^T + c K^T). Upper triangle
-    // only (rows from an even column, as above): symmetric by construction.
+    // only (rows from a multiple of 4, as above): symmetric by construction.
     PEDNAV_EKF15_UNROLL
-    for (int a = 0; a < N; ++a) {
-        const double ka = K[a], ca = c[a], ska = s * ka;
-        double* __restrict pa = P_[a];
-        for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] + (ska * K[b] - (ka * c[b] + ca * K[b]));
+    for (int g = 0; g < N; g += 4) {
+        for (int a = g; a < g + 4 && a < N; ++a) {
+                PEDNAV_EKF15_ROW_BARRIER
+            const double ka = K[a], ca = c[a], ska = s * ka;
+            double* pa = P_[a];
+            PEDNAV_EKF15_UNROLL
+            for (int b = g; b < NP; b += 4) {
+                const v4d Kb = ld4(K + b);
+                st4(pa + b, ld4(pa + b) + (ska * Kb - (ka * ld4(c + b) + ca * Kb)));
+            }
+        }
     }
 }
 
 PEDNAV_EKF15_CLONES
-void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
+void Ekf15::update_scalar(int i, double z, double var) {
+    if (i == POS + 2) scalar_kernel(POS + 2, z, var);
+    else scalar_kernel(i, z, var);
+}
+
+PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const double var[3]) {
     // C = P H^T (columns i0..i0+2, copies), S = H P H^T + R (a copied block).
     // C, K and W are kept transposed (3 rows of 16) so that the loops over
     // the states run along contiguous memory; their padding entries are zero
     // (products of the zero padding of C).
     alignas(64) double CT[3][NP];
-    for (int j = 0; j < 3; ++j) column(i0 + j, CT[j]);
+    for (int j = 0; j < 3; ++j) column_inline(i0 + j, CT[j]);
     double S[3][3];
     for (int r = 0; r < 3; ++r)
         for (int j = 0; j < 3; ++j) S[r][j] = CT[j][i0 + r];
@@ -221,41 +263,65 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
     Si[2][1] = Si[1][2];
     // K = C S^-1 (eq. (31)), as K^T.
     alignas(64) double KT[3][NP];
+    PEDNAV_EKF15_UNROLL
     for (int j = 0; j < 3; ++j) {
         const double s0 = Si[0][j], s1 = Si[1][j], s2 = Si[2][j];
-        for (int k = 0; k < NP; ++k) KT[j][k] = CT[0][k] * s0 + CT[1][k] * s1 + CT[2][k] * s2;
+        PEDNAV_EKF15_UNROLL
+        for (int k = 0; k < NP; k += 4)
+            st4(KT[j] + k, ld4(CT[0] + k) * s0 + ld4(CT[1] + k) * s1 + ld4(CT[2] + k) * s2);
     }
-    // State (eq. (30)).
+    // State (eq. (30)); x_[15] is padding and stays zero.
     const double e0 = z[0] - x_[i0], e1 = z[1] - x_[i0 + 1], e2 = z[2] - x_[i0 + 2];
-    for (int k = 0; k < N; ++k) x_[k] += KT[0][k] * e0 + KT[1][k] * e1 + KT[2][k] * e2;
+    PEDNAV_EKF15_UNROLL
+    for (int k = 0; k < NP; k += 4)
+        st4(x_ + k, ld4(x_ + k) + (ld4(KT[0] + k) * e0 + ld4(KT[1] + k) * e1 + ld4(KT[2] + k) * e2));
     if (!joseph_) {
         // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, rows
-        // from an even column.
+        // from a multiple of 4.
         PEDNAV_EKF15_UNROLL
-        for (int a = 0; a < N; ++a) {
-            const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
-            double* __restrict pa = P_[a];
-            for (int b = a & ~1; b < NP; ++b) pa[b] = pa[b] - (k0 * CT[0][b] + k1 * CT[1][b] + k2 * CT[2][b]);
+        for (int g = 0; g < N; g += 4) {
+                for (int a = g; a < g + 4 && a < N; ++a) {
+                PEDNAV_EKF15_ROW_BARRIER
+                const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
+                double* pa = P_[a];
+                PEDNAV_EKF15_UNROLL
+                for (int b = g; b < NP; b += 4)
+                    st4(pa + b, ld4(pa + b) - (k0 * ld4(CT[0] + b) + k1 * ld4(CT[1] + b) + k2 * ld4(CT[2] + b)));
+            }
         }
         return;
     }
     // Joseph form (eq. (33)): P - K C^T - C K^T + K S K^T
     //   = P + K W - C K^T with W = S K^T - C^T (3 x 15). Upper triangle only,
-    // rows from an even column (the padding column stays zero).
+    // rows from a multiple of 4 (the padding column stays zero).
     alignas(64) double W[3][NP];
+    PEDNAV_EKF15_UNROLL
     for (int j = 0; j < 3; ++j) {
         const double s0 = S[j][0], s1 = S[j][1], s2 = S[j][2];
-        for (int k = 0; k < NP; ++k) W[j][k] = s0 * KT[0][k] + s1 * KT[1][k] + s2 * KT[2][k] - CT[j][k];
+        PEDNAV_EKF15_UNROLL
+        for (int k = 0; k < NP; k += 4)
+            st4(W[j] + k, s0 * ld4(KT[0] + k) + s1 * ld4(KT[1] + k) + s2 * ld4(KT[2] + k) - ld4(CT[j] + k));
     }
     PEDNAV_EKF15_UNROLL
-    for (int a = 0; a < N; ++a) {
-        const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
-        const double c0 = CT[0][a], c1 = CT[1][a], c2 = CT[2][a];
-        double* __restrict pa = P_[a];
-        for (int b = a & ~1; b < NP; ++b)
-            pa[b] = pa[b] + ((k0 * W[0][b] + k1 * W[1][b] + k2 * W[2][b]) -
-                             (c0 * KT[0][b] + c1 * KT[1][b] + c2 * KT[2][b]));
+    for (int g = 0; g < N; g += 4) {
+        for (int a = g; a < g + 4 && a < N; ++a) {
+                PEDNAV_EKF15_ROW_BARRIER
+            const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
+            const double c0 = CT[0][a], c1 = CT[1][a], c2 = CT[2][a];
+            double* pa = P_[a];
+            PEDNAV_EKF15_UNROLL
+            for (int b = g; b < NP; b += 4)
+                st4(pa + b, ld4(pa + b) + ((k0 * ld4(W[0] + b) + k1 * ld4(W[1] + b) + k2 * ld4(W[2] + b)) -
+                                           (c0 * ld4(KT[0] + b) + c1 * ld4(KT[1] + b) + c2 * ld4(KT[2] + b))));
+        }
     }
+}
+
+PEDNAV_EKF15_CLONES
+void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
+    if (i0 == VEL) block3_kernel(VEL, z, var);
+    else if (i0 == BG) block3_kernel(BG, z, var);
+    else block3_kernel(i0, z, var);
 }
 
 }  // namespace pednav::foot

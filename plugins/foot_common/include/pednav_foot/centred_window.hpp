@@ -6,7 +6,7 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
+#include <memory>
 
 namespace pednav::foot {
 
@@ -18,7 +18,8 @@ public:
     CentredWindow(int64_t half_ns, size_t min_capacity) : half_ns_(half_ns) {
         size_t cap = 16;
         while (cap < min_capacity) cap <<= 1;
-        ring_.resize(cap);
+        ring_.reset(new Elem[cap]());
+        cap_ = cap;
         mask_ = cap - 1;
     }
 
@@ -29,16 +30,7 @@ public:
     // window is complete, in time order.
     template <class Out>
     void push(const Elem& e, Out&& out) {
-        while (n_ - lo_ >= ring_.size()) {
-            // Ring full (input faster than the capacity assumed): shrink the
-            // window from the left, finishing the oldest centre if needed.
-            if (lo_ < c_ && lo_ < hi_) {
-                acc_.remove(at(lo_));
-                ++lo_;
-            } else {
-                emit_centre(out);
-            }
-        }
+        if (n_ - lo_ >= cap_) make_room(out);
         ring_[n_ & mask_] = e;
         ++n_;
         const int64_t t_new = e.t_ns;
@@ -63,22 +55,44 @@ public:
 private:
     const Elem& at(uint64_t i) const { return ring_[i & mask_]; }
 
+    // Ring full (input faster than the capacity assumed): shrink the window
+    // from the left, finishing the oldest centre if needed.
+    template <class Out>
+    void make_room(Out& out) {
+        while (n_ - lo_ >= cap_) {
+            if (lo_ < c_ && lo_ < hi_) {
+                acc_.remove(at(lo_));
+                ++lo_;
+            } else {
+                emit_centre(out);
+            }
+        }
+    }
+
+    // The indices are kept in locals in the loops: the accumulator's stores
+    // could otherwise alias them and force reloads.
     template <class Out>
     void emit_centre(Out& out) {
-        const Elem& centre = at(c_);
+        const Elem* ring = ring_.get();
+        const uint64_t mask = mask_, n = n_, c = c_;
+        const Elem& centre = ring[c & mask];
         const int64_t t_hi = centre.t_ns + half_ns_;
-        while (hi_ < n_ && at(hi_).t_ns <= t_hi) {
-            acc_.add(at(hi_));
-            ++hi_;
+        uint64_t hi = hi_;
+        while (hi < n && ring[hi & mask].t_ns <= t_hi) {
+            acc_.add(ring[hi & mask]);
+            ++hi;
         }
+        hi_ = hi;
         const int64_t t_lo = centre.t_ns - half_ns_;
-        while (lo_ < c_ && at(lo_).t_ns < t_lo) {
-            acc_.remove(at(lo_));
-            ++lo_;
+        uint64_t lo = lo_;
+        while (lo < c && ring[lo & mask].t_ns < t_lo) {
+            acc_.remove(ring[lo & mask]);
+            ++lo;
         }
+        lo_ = lo;
         if (++since_rebuild_ >= 8192) rebuild();
         out(centre, acc_);
-        ++c_;
+        c_ = c + 1;
     }
 
     // Recomputes the accumulator from the window contents, bounding the
@@ -90,7 +104,8 @@ private:
     }
 
     int64_t half_ns_;
-    std::vector<Elem> ring_;
+    std::unique_ptr<Elem[]> ring_;
+    uint64_t cap_ = 0;
     uint64_t mask_ = 0;
     uint64_t n_ = 0;   // samples pushed
     uint64_t c_ = 0;   // next centre to finish

