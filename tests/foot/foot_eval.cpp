@@ -117,6 +117,53 @@ XioScore score_xio(const std::string& name, const std::string& config_json) {
     return sc;
 }
 
+namespace {
+ReplayResult run_log(const io::SensorLog& log, const std::string& config_json) {
+    auto doc = nlohmann::json::parse(config_json);
+    const io::StreamInfo* s = log.stream("accel");
+    doc["imu_rate_hz"] = s ? s->median_rate_hz : 0.0;
+    ReplayOptions o;
+    o.config_json = doc.dump();
+    o.plugin_dirs = {PEDNAV_PLUGIN_OUTPUT_DIR};
+    ReplayResult r = replay(o, io::merged_records(log));
+    if (!r.error.empty()) throw std::runtime_error(r.error);
+    return r;
+}
+}  // namespace
+
+ClipScore score_xio_clipped(const std::string& name, const std::string& config_json, double clip_radps,
+                            bool tell_range) {
+    ClipScore sc;
+    io::SensorLog log = io::read_sensor_file(data_dir() + "/xio-gait-ngimu/" + name + ".csv");
+    const ReplayResult ref = run_log(log, config_json);
+    for (auto& r : log.imu)
+        for (double& g : r.gyro_radps)
+            if (std::abs(g) > clip_radps) {
+                g = std::copysign(clip_radps, g);
+                ++sc.clipped_samples;
+            }
+    auto doc = nlohmann::json::parse(config_json);
+    if (tell_range) doc["pipelines"]["foot"]["attitude_estimator"]["params"]["gyro_range_radps"] = clip_radps;
+    const ReplayResult r = run_log(log, doc.dump());
+    sc.strides = r.strides.size();
+    sc.strides_unclipped = ref.strides.size();
+    const size_t n = std::min(sc.strides, sc.strides_unclipped);
+    double ex = 0, ey = 0, eh = 0, sum_p = 0, sum_h = 0;
+    for (size_t i = 0; i < n; ++i) {
+        ex += r.strides[i].displacement_enu_m[0] - ref.strides[i].displacement_enu_m[0];
+        ey += r.strides[i].displacement_enu_m[1] - ref.strides[i].displacement_enu_m[1];
+        eh += r.strides[i].heading_change_rad - ref.strides[i].heading_change_rad;
+        sum_p += ex * ex + ey * ey;
+        const double dh = std::remainder(eh, 2.0 * M_PI) * 180.0 / M_PI;
+        sum_h += dh * dh;
+    }
+    if (n) {
+        sc.footprint_rms_m = std::sqrt(sum_p / n);
+        sc.heading_rms_deg = std::sqrt(sum_h / n);
+    }
+    return sc;
+}
+
 KorogluScore score_koroglu(int n, const std::string& config_json) {
     KorogluScore sc;
     sc.name = "SensorConnectData_" + std::to_string(n);

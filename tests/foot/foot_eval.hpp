@@ -44,6 +44,18 @@ struct XioScore {
 };
 XioScore score_xio(const std::string& name, const std::string& config_json);
 
+// An xio loop with its gyro clipped at `clip_radps` (as a sensor set to that
+// range would read it), against the same loop unclipped: how far the
+// footprints and the stride headings move. The unclipped run is the truth.
+struct ClipScore {
+    size_t clipped_samples = 0;
+    size_t strides = 0, strides_unclipped = 0;
+    double footprint_rms_m = 0;   // rms over strides of |cumulative displacement - unclipped's|
+    double heading_rms_deg = 0;   // rms over strides of the cumulative heading change's difference
+};
+ClipScore score_xio_clipped(const std::string& name, const std::string& config_json, double clip_radps,
+                            bool tell_range);
+
 struct KorogluScore {
     std::string name;
     size_t strides = 0;

@@ -1,5 +1,5 @@
 // Prints the foot pipeline's accuracy on every shared foot recording, for
-// docs/foot-pipeline.md. Usage: foot_report [shoe|multicondition] [json merge patch] [quick|tables|hupt]
+// docs/foot-pipeline.md. Usage: foot_report [shoe|multicondition] [json merge patch] [quick|tables|hupt|clip]
 #include <cstdio>
 #include <string>
 
@@ -29,6 +29,22 @@ int main(int argc, char** argv) {
                     const Stats x = stats_of(ax), y = stats_of(ay);
                     std::printf("  %d dx cm min %.0f max %.0f mean %.0f sd %.0f | dy cm min %.0f max %.0f mean %.0f sd %.0f | mean err %.2f %%\n",
                                 n, x.min, x.max, x.mean, x.sd, y.min, y.max, y.mean, y.sd, s.mean_pct);
+                }
+            }
+            return 0;
+        }
+        if (argc > 3 && std::string(argv[3]) == "clip") {
+            // The xio loops with the gyro clipped as a +-500/450/400 deg/s sensor
+            // would read it, against the unclipped loops.
+            for (double dps : {500.0, 450.0, 400.0}) {
+                for (const char* w : {"short_walk", "long_walk"}) {
+                    for (bool range : {false, true}) {
+                        const ClipScore c = score_xio_clipped(w, cfg, dps * M_PI / 180.0, range);
+                        std::printf("clip %3.0f deg/s %-10s range %-5s clipped samples %4zu strides %zu/%zu  footprints "
+                                    "%.3f m rms  heading %.2f deg rms\n",
+                                    dps, w, range ? "given" : "no", c.clipped_samples, c.strides, c.strides_unclipped,
+                                    c.footprint_rms_m, c.heading_rms_deg);
+                    }
                 }
             }
             return 0;
