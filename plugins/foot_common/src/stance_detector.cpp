@@ -26,6 +26,7 @@ StanceDetector::StanceDetector(Kind kind, const StanceWindows& w, double max_rat
       h3_(half_ns(w.median_window_s)) {
     cap1_ = capacity_for(w.window_s, max_rate_hz);
     mask1_ = cap1_ - 1;
+    t1_.reset(new int64_t[cap1_]());
     in_.reset(new In[cap1_]());
     cap2_ = adaptive_ ? capacity_for(w.adaptive_window_s, max_rate_hz) : 0;
     cap3_ = capacity_for(w.median_window_s, max_rate_hz);
@@ -34,7 +35,10 @@ StanceDetector::StanceDetector(Kind kind, const StanceWindows& w, double max_rat
     uint64_t cap_d = 16;
     while (cap_d < cap2_ + cap3_ + 1) cap_d <<= 1;
     maskd_ = cap_d - 1;
-    dec_.reset(new Dec[cap_d]());
+    td_.reset(new int64_t[cap_d]());
+    st_.reset(new double[cap_d]());
+    fx_.reset(new bool[cap_d]());
+    sn_.reset(new bool[cap_d]());
     const uint64_t cap_dq = std::max<uint64_t>(cap2_, 16);
     dq_mask_ = cap_dq - 1;
     dq_.reset(new uint64_t[cap_dq]());

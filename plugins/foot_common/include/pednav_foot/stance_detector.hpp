@@ -118,20 +118,12 @@ public:
 private:
     StanceDetector(Kind kind, const StanceWindows& windows, double max_rate_hz);
 
-    // Stage-1 input: one raw sample.
+    // Stage-1 input: one raw sample (its time is in t1_).
     struct In {
-        int64_t t_ns;
         double a[3];
         double a2;  // |a|^2
         double w2;  // |w|^2
         double am;  // |a| - 9.81 (offset keeps the running sums well conditioned)
-    };
-    // Stages 2 and 3: one sample's statistic and decisions.
-    struct Dec {
-        int64_t t_ns;
-        double statistic;
-        bool fixed;   // stage 1: the fixed-threshold decision
-        bool stance;  // stage 2: with the adaptive threshold (= fixed without it)
     };
 
     // ---- stage 1: running sums over the centred window -------------------
@@ -172,8 +164,7 @@ private:
 
     // Stage-1 statistic and fixed decision of `centre` over the window [lo1_, hi1_).
     template <bool Shoe>
-    bool test(const In& centre, double& statistic) const {
-        const double n = static_cast<double>(hi1_ - lo1_);
+    bool test(const In& centre, double n, double& statistic) const {
         if (!Shoe) {
             // foot-imu-zupt-zaru-ekf eq. (18)-(19): mean and variance of |a| over the window.
             const double mean = s1_ / n;
@@ -199,88 +190,79 @@ private:
     template <bool Shoe, bool Adaptive, class Out>
     void emit1(Out& out) {
         const In* ring = in_.get();
+        const int64_t* tr = t1_.get();
         const uint64_t mask = mask1_, n = n1_, c = c1_;
-        const In& centre = ring[c & mask];
-        const int64_t t_hi = centre.t_ns + h1_;
-        uint64_t hi = hi1_;
-        while (hi < n && ring[hi & mask].t_ns <= t_hi) {
+        const int64_t t = tr[c & mask];
+        const int64_t t_hi = t + h1_, t_lo = t - h1_;
+        uint64_t hi = hi1_, lo = lo1_;
+        while (hi < n && tr[hi & mask] <= t_hi) {
             acc_add<Shoe>(ring[hi & mask]);
             ++hi;
         }
-        hi1_ = hi;
-        const int64_t t_lo = centre.t_ns - h1_;
-        uint64_t lo = lo1_;
-        while (lo < c && ring[lo & mask].t_ns < t_lo) {
+        while (lo < c && tr[lo & mask] < t_lo) {
             acc_remove<Shoe>(ring[lo & mask]);
             ++lo;
         }
+        hi1_ = hi;
         lo1_ = lo;
+        c1_ = c + 1;
         if (++since_rebuild_ >= 8192) rebuild1<Shoe>();
         double statistic;
-        const bool fixed = test<Shoe>(centre, statistic);
-        const int64_t t = centre.t_ns;
-        c1_ = c + 1;
+        const bool fixed = test<Shoe>(ring[c & mask], static_cast<double>(hi - lo), statistic);
         if (Adaptive) push2(t, statistic, fixed, out);
         else push3_new(t, statistic, fixed, out);
     }
 
     // ---- stage 2: running minimum of the statistic (monotone deque) -------
-    void dq_add(uint64_t i) {
-        const double s = dec_[i & maskd_].statistic;
-        uint64_t tail = dq_tail_;
-        while (tail > dq_head_ && dec_[dq_[(tail - 1) & dq_mask_] & maskd_].statistic >= s) --tail;
-        dq_[tail & dq_mask_] = i;
-        dq_tail_ = tail + 1;
-    }
-    void dq_remove(uint64_t i) {
-        if (dq_tail_ > dq_head_ && dq_[dq_head_ & dq_mask_] == i) ++dq_head_;
-    }
-    double dq_min() const {
-        return dq_tail_ > dq_head_ ? dec_[dq_[dq_head_ & dq_mask_] & maskd_].statistic : HUGE_VAL;
-    }
-
     template <class Out>
     void push2(int64_t t, double statistic, bool fixed, Out& out) {
         if (n2_ - lo2_ >= cap2_) make_room2(out);
-        Dec& d = dec_[n2_ & maskd_];
-        d.t_ns = t;
-        d.statistic = statistic;
-        d.fixed = fixed;
-        ++n2_;
-        while (c2_ < n2_ && t >= dec_[c2_ & maskd_].t_ns + h2_) emit2(out);
+        const uint64_t i = n2_ & maskd_;
+        td_[i] = t;
+        st_[i] = statistic;
+        fx_[i] = fixed;
+        const uint64_t n = ++n2_;
+        while (c2_ < n && t >= td_[c2_ & maskd_] + h2_) emit2(out);
     }
 
     template <class Out>
     void emit2(Out& out) {
-        const uint64_t c = c2_, n = n2_, mask = maskd_;
-        const Dec& centre = dec_[c & mask];
-        const int64_t t_hi = centre.t_ns + h2_;
-        uint64_t hi = hi2_;
-        while (hi < n && dec_[hi & mask].t_ns <= t_hi) {
-            dq_add(hi);
+        const int64_t* tr = td_.get();
+        const double* st = st_.get();
+        uint64_t* dq = dq_.get();
+        const uint64_t c = c2_, n = n2_, mask = maskd_, qmask = dq_mask_;
+        const int64_t t = tr[c & mask];
+        const int64_t t_hi = t + h2_, t_lo = t - h2_;
+        uint64_t hi = hi2_, lo = lo2_, head = dq_head_, tail = dq_tail_;
+        while (hi < n && tr[hi & mask] <= t_hi) {
+            const double x = st[hi & mask];
+            while (tail > head && st[dq[(tail - 1) & qmask] & mask] >= x) --tail;
+            dq[tail & qmask] = hi;
+            ++tail;
             ++hi;
         }
-        hi2_ = hi;
-        const int64_t t_lo = centre.t_ns - h2_;
-        uint64_t lo = lo2_;
-        while (lo < c && dec_[lo & mask].t_ns < t_lo) {
-            dq_remove(lo);
+        while (lo < c && tr[lo & mask] < t_lo) {
+            if (tail > head && dq[head & qmask] == lo) ++head;
             ++lo;
         }
+        hi2_ = hi;
         lo2_ = lo;
+        dq_head_ = head;
+        dq_tail_ = tail;
+        c2_ = c + 1;
         // (The deque holds exactly the window's strict suffix minima whatever
         // the history: it needs no periodic rebuild.)
-        const double s = centre.statistic;
-        const bool stance = centre.fixed || (s < adaptive_max_ && s <= adaptive_ratio_ * dq_min());
-        c2_ = c + 1;
-        push3(c, stance, out);
+        const double s = st[c & mask];
+        const double m = tail > head ? st[dq[head & qmask] & mask] : HUGE_VAL;
+        const bool stance = fx_[c & mask] || (s < adaptive_max_ && s <= adaptive_ratio_ * m);
+        push3(c, t, stance, out);
     }
 
     template <class Out>
     void make_room2(Out& out) {
         while (n2_ - lo2_ >= cap2_) {
             if (lo2_ < c2_ && lo2_ < hi2_) {
-                dq_remove(lo2_);
+                if (dq_tail_ > dq_head_ && dq_[dq_head_ & dq_mask_] == lo2_) ++dq_head_;
                 ++lo2_;
             } else {
                 emit2(out);
@@ -289,62 +271,59 @@ private:
     }
 
     // ---- stage 3: majority vote -------------------------------------------
-    // Sample i (its time and statistic already in dec_) enters the vote.
+    // Sample i at time t (its statistic already in the ring) enters the vote.
     template <class Out>
-    void push3(uint64_t i, bool stance, Out& out) {
+    void push3(uint64_t i, int64_t t, bool stance, Out& out) {
         if (n3_ - lo3_ >= cap3_) make_room3(out);
-        Dec& d = dec_[i & maskd_];
-        d.stance = stance;
-        n3_ = i + 1;
-        const int64_t t = d.t_ns;
-        while (c3_ < n3_ && t >= dec_[c3_ & maskd_].t_ns + h3_) emit3(out);
+        sn_[i & maskd_] = stance;
+        const uint64_t n = n3_ = i + 1;
+        while (c3_ < n && t >= td_[c3_ & maskd_] + h3_) emit3(out);
     }
     // Without the adaptive stage: the stage-1 result goes straight to the vote.
     template <class Out>
     void push3_new(int64_t t, double statistic, bool fixed, Out& out) {
         if (n3_ - lo3_ >= cap3_) make_room3(out);
-        Dec& d = dec_[n3_ & maskd_];
-        d.t_ns = t;
-        d.statistic = statistic;
-        d.fixed = d.stance = fixed;
-        ++n3_;
-        while (c3_ < n3_ && t >= dec_[c3_ & maskd_].t_ns + h3_) emit3(out);
+        const uint64_t i = n3_ & maskd_;
+        td_[i] = t;
+        st_[i] = statistic;
+        fx_[i] = sn_[i] = fixed;
+        const uint64_t n = ++n3_;
+        while (c3_ < n && t >= td_[c3_ & maskd_] + h3_) emit3(out);
     }
 
     template <class Out>
     void emit3(Out& out) {
+        const int64_t* tr = td_.get();
+        const bool* sn = sn_.get();
         const uint64_t c = c3_, n = n3_, mask = maskd_;
-        const Dec& centre = dec_[c & mask];
-        const int64_t t_hi = centre.t_ns + h3_;
-        uint64_t hi = hi3_;
-        int ones = ones_;
-        while (hi < n && dec_[hi & mask].t_ns <= t_hi) {
-            ones += dec_[hi & mask].stance ? 1 : 0;
+        const int64_t t = tr[c & mask];
+        const int64_t t_hi = t + h3_, t_lo = t - h3_;
+        uint64_t hi = hi3_, lo = lo3_;
+        int64_t ones = ones_;
+        while (hi < n && tr[hi & mask] <= t_hi) {
+            ones += sn[hi & mask];
             ++hi;
         }
-        hi3_ = hi;
-        const int64_t t_lo = centre.t_ns - h3_;
-        uint64_t lo = lo3_;
-        while (lo < c && dec_[lo & mask].t_ns < t_lo) {
-            ones -= dec_[lo & mask].stance ? 1 : 0;
+        while (lo < c && tr[lo & mask] < t_lo) {
+            ones -= sn[lo & mask];
             ++lo;
         }
+        hi3_ = hi;
         lo3_ = lo;
         ones_ = ones;
-        const int64_t count = static_cast<int64_t>(hi - lo);
-        bool s = centre.stance;
-        if (2 * static_cast<int64_t>(ones) > count) s = true;
-        else if (2 * static_cast<int64_t>(ones) < count) s = false;
-        const StanceDecision d{centre.t_ns, s, centre.statistic};
         c3_ = c + 1;
-        out(d);
+        const int64_t count = static_cast<int64_t>(hi - lo);
+        bool s = sn[c & mask];
+        if (2 * ones > count) s = true;
+        else if (2 * ones < count) s = false;
+        out(StanceDecision{t, s, st_[c & mask]});
     }
 
     template <class Out>
     void make_room3(Out& out) {
         while (n3_ - lo3_ >= cap3_) {
             if (lo3_ < c3_ && lo3_ < hi3_) {
-                ones_ -= dec_[lo3_ & maskd_].stance ? 1 : 0;
+                ones_ -= sn_[lo3_ & maskd_];
                 ++lo3_;
             } else {
                 emit3(out);
@@ -368,24 +347,25 @@ private:
     template <bool Shoe, bool Adaptive, class Out>
     void push_impl(int64_t t_ns, const double* a, const double* w, Out& out) {
         if (n1_ - lo1_ >= cap1_) make_room1<Shoe, Adaptive>(out);
-        In& e = in_[n1_ & mask1_];
-        e.t_ns = t_ns;
+        const uint64_t k = n1_ & mask1_;
+        t1_[k] = t_ns;
+        In& e = in_[k];
         e.a[0] = a[0];
         e.a[1] = a[1];
         e.a[2] = a[2];
         e.a2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
         e.w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
         e.am = std::sqrt(e.a2) - 9.81;
-        ++n1_;
-        while (c1_ < n1_ && t_ns >= in_[c1_ & mask1_].t_ns + h1_) emit1<Shoe, Adaptive>(out);
+        const uint64_t n = ++n1_;
+        while (c1_ < n && t_ns >= t1_[c1_ & mask1_] + h1_) emit1<Shoe, Adaptive>(out);
         // Every stage-1 result up to t - h1 is out: later stages may finish
         // their centres against that watermark.
         int64_t mark = t_ns - h1_;
         if (Adaptive) {
-            while (c2_ < n2_ && dec_[c2_ & maskd_].t_ns + h2_ <= mark) emit2(out);
+            while (c2_ < n2_ && td_[c2_ & maskd_] + h2_ <= mark) emit2(out);
             mark -= h2_;
         }
-        while (c3_ < n3_ && dec_[c3_ & maskd_].t_ns + h3_ <= mark) emit3(out);
+        while (c3_ < n3_ && td_[c3_ & maskd_] + h3_ <= mark) emit3(out);
     }
 
     template <bool Shoe, bool Adaptive, class Out>
@@ -404,7 +384,10 @@ private:
     double shoe_ia_ = 0, shoe_iw_ = 0;  // 1 / sigma_a^2, 1 / sigma_w^2
     int64_t h1_ = 0, h2_ = 0, h3_ = 0;  // half windows
 
-    // Stage 1: raw samples [lo1_, n1_) kept; sums over [lo1_, hi1_); next centre c1_.
+    // Stage s holds the samples [lo_s, n_s), its running result covers
+    // [lo_s, hi_s), its next centre is c_s.
+    // Stage 1: a ring of raw samples.
+    std::unique_ptr<int64_t[]> t1_;
     std::unique_ptr<In[]> in_;
     uint64_t cap1_ = 0, mask1_ = 0;
     uint64_t n1_ = 0, c1_ = 0, lo1_ = 0, hi1_ = 0;
@@ -413,14 +396,18 @@ private:
     double sa2_ = 0, sw2_ = 0;  // SHOE sums
     double s1_ = 0, s2_ = 0;    // multi-condition sums
 
-    // Stages 2 and 3 share one ring indexed by sample number.
-    std::unique_ptr<Dec[]> dec_;
+    // Stages 2 and 3 share one ring indexed by sample number: time,
+    // statistic, fixed decision (stage 1), decision with the adaptive
+    // threshold (stage 2).
+    std::unique_ptr<int64_t[]> td_;
+    std::unique_ptr<double[]> st_;
+    std::unique_ptr<bool[]> fx_, sn_;
     uint64_t maskd_ = 0;
     uint64_t cap2_ = 0, n2_ = 0, c2_ = 0, lo2_ = 0, hi2_ = 0;
     std::unique_ptr<uint64_t[]> dq_;  // sample numbers of the deque, in a ring
     uint64_t dq_mask_ = 0, dq_head_ = 0, dq_tail_ = 0;
     uint64_t cap3_ = 0, n3_ = 0, c3_ = 0, lo3_ = 0, hi3_ = 0;
-    int ones_ = 0;
+    int64_t ones_ = 0;
 };
 
 }  // namespace pednav::foot
