@@ -140,7 +140,7 @@ void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in,
     out.vel = v_;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) out.cov_pos[3 * r + c] = ekf_.P(Ekf15::POS + r, Ekf15::POS + c);
-    out.heading_rad = heading_of(q);
+    out.heading_rad = heading_of(R);  // R is q's matrix (recomputed after an injection)
 }
 
 bool FootIns::close_stance(StrideOut& s) {
