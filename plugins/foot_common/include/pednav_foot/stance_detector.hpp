@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 
 namespace pednav::foot {
 
@@ -127,66 +128,78 @@ private:
     };
 
     // ---- stage 1: running sums over the centred window -------------------
-    template <bool Shoe>
-    void acc_add(const In& e) {
-        if (Shoe) {
-            sa_[0] += e.a[0];
-            sa_[1] += e.a[1];
-            sa_[2] += e.a[2];
-            sa2_ += e.a2;
-            sw2_ += e.w2;
-        } else {
-            s1_ += e.am;
-            s2_ += e.am * e.am;
+    struct ShoeSums {
+        double a[3] = {0, 0, 0};
+        double aa = 0, w2 = 0;
+        void add(const In& e) {
+            a[0] += e.a[0];
+            a[1] += e.a[1];
+            a[2] += e.a[2];
+            aa += e.a2;
+            w2 += e.w2;
         }
-    }
-    template <bool Shoe>
-    void acc_remove(const In& e) {
-        if (Shoe) {
-            sa_[0] -= e.a[0];
-            sa_[1] -= e.a[1];
-            sa_[2] -= e.a[2];
-            sa2_ -= e.a2;
-            sw2_ -= e.w2;
-        } else {
-            s1_ -= e.am;
-            s2_ -= e.am * e.am;
+        void remove(const In& e) {
+            a[0] -= e.a[0];
+            a[1] -= e.a[1];
+            a[2] -= e.a[2];
+            aa -= e.a2;
+            w2 -= e.w2;
         }
+    };
+    struct MultiSums {
+        double m1 = 0, m2 = 0;
+        void add(const In& e) {
+            m1 += e.am;
+            m2 += e.am * e.am;
+        }
+        void remove(const In& e) {
+            m1 -= e.am;
+            m2 -= e.am * e.am;
+        }
+    };
+    template <bool Shoe>
+    using Sums = std::conditional_t<Shoe, ShoeSums, MultiSums>;
+    template <bool Shoe>
+    Sums<Shoe>& sums() {
+        if constexpr (Shoe) return shoe_sums_;
+        else return multi_sums_;
     }
+
     // Recomputes the sums from the window contents, bounding the round-off
     // that add/remove pairs accumulate over a long stream.
     template <bool Shoe>
     void rebuild1() {
         since_rebuild_ = 0;
-        sa_[0] = sa_[1] = sa_[2] = sa2_ = sw2_ = s1_ = s2_ = 0.0;
-        for (uint64_t i = lo1_; i < hi1_; ++i) acc_add<Shoe>(in_[i & mask1_]);
+        Sums<Shoe> x{};
+        for (uint64_t i = lo1_; i < hi1_; ++i) x.add(in_[i & mask1_]);
+        sums<Shoe>() = x;
     }
 
-    // Stage-1 statistic and fixed decision of `centre` over the window [lo1_, hi1_).
-    template <bool Shoe>
-    bool test(const In& centre, double n, double& statistic) const {
-        if (!Shoe) {
-            // foot-imu-zupt-zaru-ekf eq. (18)-(19): mean and variance of |a| over the window.
-            const double mean = s1_ / n;
-            const double var = std::max(0.0, s2_ / n - mean * mean);
-            const double sd = std::sqrt(var);
-            const double a_norm = centre.am + 9.81;
-            const bool c1 = a_norm > multi_.accel_min_mps2 && a_norm < multi_.accel_max_mps2;  // eq. (17)
-            const bool c2 = sd < multi_.accel_std_max_mps2;                                     // eq. (20)
-            const bool c3 = centre.w2 < multi_.gyro_max_radps * multi_.gyro_max_radps;         // eq. (22)
-            // C2 and C3 as one margin (< 1 when both hold), for plots and the adaptive stage.
-            statistic = std::max(sd / multi_.accel_std_max_mps2, std::sqrt(centre.w2) / multi_.gyro_max_radps);
-            return c1 && c2 && c3;                                                               // eq. (23)
-        }
-        const double mean_norm = std::sqrt(sa_[0] * sa_[0] + sa_[1] * sa_[1] + sa_[2] * sa_[2]) / n;
+    // Stage-1 statistic and fixed decision of `centre` from the sums over n samples.
+    bool test(const MultiSums& m, const In& centre, double n, double& statistic) const {
+        // foot-imu-zupt-zaru-ekf eq. (18)-(19): mean and variance of |a| over the window.
+        const double mean = m.m1 / n;
+        const double var = std::max(0.0, m.m2 / n - mean * mean);
+        const double sd = std::sqrt(var);
+        const double a_norm = centre.am + 9.81;
+        const bool c1 = a_norm > multi_.accel_min_mps2 && a_norm < multi_.accel_max_mps2;  // eq. (17)
+        const bool c2 = sd < multi_.accel_std_max_mps2;                                     // eq. (20)
+        const bool c3 = centre.w2 < multi_.gyro_max_radps * multi_.gyro_max_radps;         // eq. (22)
+        // C2 and C3 as one margin (< 1 when both hold), for plots and the adaptive stage.
+        statistic = std::max(sd / multi_.accel_std_max_mps2, std::sqrt(centre.w2) / multi_.gyro_max_radps);
+        return c1 && c2 && c3;                                                               // eq. (23)
+    }
+    bool test(const ShoeSums& x, const In&, double n, double& statistic) const {
+        const double mean_norm = std::sqrt(x.a[0] * x.a[0] + x.a[1] * x.a[1] + x.a[2] * x.a[2]) / n;
         const double g = shoe_.gravity_mps2 > 0 ? shoe_.gravity_mps2 : mean_norm;
         // sum_j |a_j - g u|^2 = sum |a_j|^2 - 2 g n |mean a| + n g^2, with u = mean a / |mean a|.
-        const double sum_acc = std::max(0.0, sa2_ - 2.0 * g * n * mean_norm + n * g * g);
-        statistic = (sum_acc * shoe_ia_ + sw2_ * shoe_iw_) / n;
+        const double sum_acc = std::max(0.0, x.aa - 2.0 * g * n * mean_norm + n * g * g);
+        statistic = (sum_acc * shoe_ia_ + x.w2 * shoe_iw_) / n;
         return statistic < shoe_.threshold;
     }
 
     // Finishes the stage-1 centre c1_ and hands its result to the next stage.
+    // The sums are updated in a local copy (the ring stores could alias them).
     template <bool Shoe, bool Adaptive, class Out>
     void emit1(Out& out) {
         const In* ring = in_.get();
@@ -195,20 +208,25 @@ private:
         const int64_t t = tr[c & mask];
         const int64_t t_hi = t + h1_, t_lo = t - h1_;
         uint64_t hi = hi1_, lo = lo1_;
+        Sums<Shoe> x = sums<Shoe>();
         while (hi < n && tr[hi & mask] <= t_hi) {
-            acc_add<Shoe>(ring[hi & mask]);
+            x.add(ring[hi & mask]);
             ++hi;
         }
         while (lo < c && tr[lo & mask] < t_lo) {
-            acc_remove<Shoe>(ring[lo & mask]);
+            x.remove(ring[lo & mask]);
             ++lo;
         }
         hi1_ = hi;
         lo1_ = lo;
         c1_ = c + 1;
-        if (++since_rebuild_ >= 8192) rebuild1<Shoe>();
+        sums<Shoe>() = x;
+        if (++since_rebuild_ >= 8192) {
+            rebuild1<Shoe>();
+            x = sums<Shoe>();
+        }
         double statistic;
-        const bool fixed = test<Shoe>(ring[c & mask], static_cast<double>(hi - lo), statistic);
+        const bool fixed = test(x, ring[c & mask], static_cast<double>(hi - lo), statistic);
         if (Adaptive) push2(t, statistic, fixed, out);
         else push3_new(t, statistic, fixed, out);
     }
@@ -336,7 +354,7 @@ private:
     void make_room1(Out& out) {
         while (n1_ - lo1_ >= cap1_) {
             if (lo1_ < c1_ && lo1_ < hi1_) {
-                acc_remove<Shoe>(in_[lo1_ & mask1_]);
+                sums<Shoe>().remove(in_[lo1_ & mask1_]);
                 ++lo1_;
             } else {
                 emit1<Shoe, Adaptive>(out);
@@ -392,9 +410,8 @@ private:
     uint64_t cap1_ = 0, mask1_ = 0;
     uint64_t n1_ = 0, c1_ = 0, lo1_ = 0, hi1_ = 0;
     uint32_t since_rebuild_ = 0;
-    double sa_[3] = {0, 0, 0};
-    double sa2_ = 0, sw2_ = 0;  // SHOE sums
-    double s1_ = 0, s2_ = 0;    // multi-condition sums
+    ShoeSums shoe_sums_;
+    MultiSums multi_sums_;
 
     // Stages 2 and 3 share one ring indexed by sample number: time,
     // statistic, fixed decision (stage 1), decision with the adaptive
