@@ -79,8 +79,9 @@ PEDNAV_SDK_RECORD_TYPE(pn_stride_t, PN_REC_STRIDE);
 #undef PEDNAV_SDK_RECORD_TYPE
 
 namespace detail {
-// Zeroes a record with one 16-byte store per 16 bytes: std::memset of these
-// sizes becomes `rep stos`, which costs a microcoded start-up per record.
+#if defined(__GNUC__)
+// Zeroes a record with one 16-byte store per 16 bytes: GCC turns std::memset
+// of these sizes into `rep stos`, which costs a microcoded start-up per record.
 typedef double zero16_t __attribute__((vector_size(16), aligned(1), may_alias));
 template <size_t... I>
 inline void zero_chunks(unsigned char* p, std::index_sequence<I...>) {
@@ -92,6 +93,12 @@ inline void zero_record(Record& r) {
     zero_chunks(p, std::make_index_sequence<sizeof(Record) / 16>{});
     if (sizeof(Record) % 16) std::memset(p + sizeof(Record) / 16 * 16, 0, sizeof(Record) % 16);
 }
+#else
+template <class Record>
+inline void zero_record(Record& r) {
+    std::memset(&r, 0, sizeof r);
+}
+#endif
 }  // namespace detail
 
 // A zero-initialised record with its header's type and size set.
