@@ -6,7 +6,12 @@
 
 namespace pednav::foot {
 
-FootIns::FootIns(const FootInsConfig& c) : cfg_(c), levels_(c.level_match_m) {
+FootIns::FootIns(const FootInsConfig& c)
+    : cfg_(c), heel_strike_rad_(c.heel_strike_deg * M_PI / 180.0), levels_(c.level_match_m) {
+    // |toe-up| <= the rotation angle from the anchor attitude, 2 acos|w| of
+    // the relative quaternion: below the threshold (with a margin far above
+    // round-off) the swing sample cannot mark a heel strike.
+    skip_cos_half_ = heel_strike_rad_ > 1e-6 ? std::cos(0.5 * (heel_strike_rad_ - 1e-9)) + 1e-12 : 2.0;
     noise_.gyro_psd = c.gyro_noise_radps_per_sqrthz * c.gyro_noise_radps_per_sqrthz;
     noise_.accel_psd = c.accel_noise_mps2_per_sqrthz * c.accel_noise_mps2_per_sqrthz;
     noise_.gyro_bias_psd = c.gyro_bias_walk_radps_per_sqrts * c.gyro_bias_walk_radps_per_sqrts;
@@ -135,7 +140,7 @@ void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in,
     out.vel = v_;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) out.cov_pos[3 * r + c] = ekf_.P(Ekf15::POS + r, Ekf15::POS + c);
-    out.heading_rad = heading_of(q);
+    out.heading_rad = heading_of(R);  // R is q's matrix (recomputed after an injection)
 }
 
 bool FootIns::close_stance(StrideOut& s) {
@@ -185,7 +190,7 @@ void FootIns::begin_stance(int64_t t_ns) {
         // the height of the previous stance (eq. (5)), or, for the first level
         // step after stairs, that of a level stood on before at about it.
         const bool after_stairs = !level_step_;
-        level_step_ = max_toe_up_rad_ >= cfg_.heel_strike_deg * M_PI / 180.0;
+        level_step_ = max_toe_up_rad_ >= heel_strike_rad_;
         h_ref_ = level_step_ && after_stairs ? levels_.arrive(anchor_pos_.z()) : anchor_pos_.z();
     }
 }
@@ -202,14 +207,21 @@ void FootIns::stride_logic(int64_t t_ns, double dt, bool stance, const Quat& q, 
         out.stride = close_stance(stride_);
     }
     moving_s_ += dt;
-    if (have_anchor_) {
+    // Only whether the toe-up pitch reaches heel_strike_deg in this swing
+    // matters (begin_stance): once it has, or while the foot has not turned
+    // that far from the anchor attitude at all, the pitch is not computed.
+    if (have_anchor_ && !(max_toe_up_rad_ >= heel_strike_rad_)) {
         const double vh = std::sqrt(v_.x() * v_.x() + v_.y() * v_.y());
         if (vh > 0.3) {
-            // Pitch about the level axis left of the motion, relative to the
-            // attitude at the last stance; toe-up is a negative rotation about it.
-            const Vec3 left(-v_.y() / vh, v_.x() / vh, 0.0);
-            const double toe_up = -quat_log(q * anchor_q_.conjugate()).dot(left);
-            max_toe_up_rad_ = std::max(max_toe_up_rad_, toe_up);
+            const Quat& a = anchor_q_;
+            const double cos_half = std::abs(q.w() * a.w() + q.x() * a.x() + q.y() * a.y() + q.z() * a.z());
+            if (cos_half < skip_cos_half_) {
+                // Pitch about the level axis left of the motion, relative to the
+                // attitude at the last stance; toe-up is a negative rotation about it.
+                const Vec3 left(-v_.y() / vh, v_.x() / vh, 0.0);
+                const double toe_up = -quat_log(q * anchor_q_.conjugate()).dot(left);
+                max_toe_up_rad_ = std::max(max_toe_up_rad_, toe_up);
+            }
         }
     }
 }

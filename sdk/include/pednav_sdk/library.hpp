@@ -17,6 +17,8 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "node.hpp"
 
@@ -95,29 +97,60 @@ inline void with_record(const pn_record_header_t* h, Fn&& fn) {
     }
 }
 
-inline void dispatch(Node& n, const pn_record_header_t* h) {
+// Whether T's hook for a record can be named from here (it is public in T):
+// then dispatch() calls it non-virtually.
+#define PEDNAV_SDK_DIRECT_HOOK(HOOK, RECORD)                                                            \
+    template <class T, class = void>                                                                  \
+    struct Direct_##HOOK : std::false_type {};                                                        \
+    template <class T>                                                                                \
+    struct Direct_##HOOK<T, std::void_t<decltype(std::declval<T&>().T::HOOK(std::declval<const RECORD&>()))>> \
+        : std::true_type {};
+PEDNAV_SDK_DIRECT_HOOK(on_imu, pn_imu_t)
+PEDNAV_SDK_DIRECT_HOOK(on_mag, pn_mag_t)
+PEDNAV_SDK_DIRECT_HOOK(on_baro, pn_baro_t)
+PEDNAV_SDK_DIRECT_HOOK(on_gnss, pn_gnss_t)
+PEDNAV_SDK_DIRECT_HOOK(on_gait_phase, pn_gait_phase_t)
+PEDNAV_SDK_DIRECT_HOOK(on_step, pn_step_t)
+PEDNAV_SDK_DIRECT_HOOK(on_attitude, pn_attitude_t)
+PEDNAV_SDK_DIRECT_HOOK(on_attitude_correction, pn_attitude_correction_t)
+PEDNAV_SDK_DIRECT_HOOK(on_position, pn_position_t)
+PEDNAV_SDK_DIRECT_HOOK(on_stride, pn_stride_t)
+#undef PEDNAV_SDK_DIRECT_HOOK
+
+// Calls the hook of node type T for the record. The engine's node is always
+// exactly a T (the trampolines below create it), so a public hook is called
+// non-virtually and can be inlined into process(); a hook T keeps private is
+// called through the vtable.
+#define PEDNAV_SDK_CALL_HOOK(HOOK)                                 \
+    [&](const auto& r) {                                           \
+        if constexpr (Direct_##HOOK<T>::value) n.T::HOOK(r);       \
+        else static_cast<Node&>(n).HOOK(r);                        \
+    }
+template <class T>
+inline void dispatch(T& n, const pn_record_header_t* h) {
     switch (h->type) {
-        case PN_REC_IMU: with_record<pn_imu_t>(h, [&](const auto& r) { n.on_imu(r); }); break;
-        case PN_REC_MAG: with_record<pn_mag_t>(h, [&](const auto& r) { n.on_mag(r); }); break;
-        case PN_REC_BARO: with_record<pn_baro_t>(h, [&](const auto& r) { n.on_baro(r); }); break;
-        case PN_REC_GNSS: with_record<pn_gnss_t>(h, [&](const auto& r) { n.on_gnss(r); }); break;
+        case PN_REC_IMU: with_record<pn_imu_t>(h, PEDNAV_SDK_CALL_HOOK(on_imu)); break;
+        case PN_REC_MAG: with_record<pn_mag_t>(h, PEDNAV_SDK_CALL_HOOK(on_mag)); break;
+        case PN_REC_BARO: with_record<pn_baro_t>(h, PEDNAV_SDK_CALL_HOOK(on_baro)); break;
+        case PN_REC_GNSS: with_record<pn_gnss_t>(h, PEDNAV_SDK_CALL_HOOK(on_gnss)); break;
         case PN_REC_GAIT_PHASE:
-            with_record<pn_gait_phase_t>(h, [&](const auto& r) { n.on_gait_phase(r); });
+            with_record<pn_gait_phase_t>(h, PEDNAV_SDK_CALL_HOOK(on_gait_phase));
             break;
-        case PN_REC_STEP: with_record<pn_step_t>(h, [&](const auto& r) { n.on_step(r); }); break;
+        case PN_REC_STEP: with_record<pn_step_t>(h, PEDNAV_SDK_CALL_HOOK(on_step)); break;
         case PN_REC_ATTITUDE:
-            with_record<pn_attitude_t>(h, [&](const auto& r) { n.on_attitude(r); });
+            with_record<pn_attitude_t>(h, PEDNAV_SDK_CALL_HOOK(on_attitude));
             break;
         case PN_REC_ATTITUDE_CORRECTION:
-            with_record<pn_attitude_correction_t>(h, [&](const auto& r) { n.on_attitude_correction(r); });
+            with_record<pn_attitude_correction_t>(h, PEDNAV_SDK_CALL_HOOK(on_attitude_correction));
             break;
         case PN_REC_POSITION:
-            with_record<pn_position_t>(h, [&](const auto& r) { n.on_position(r); });
+            with_record<pn_position_t>(h, PEDNAV_SDK_CALL_HOOK(on_position));
             break;
-        case PN_REC_STRIDE: with_record<pn_stride_t>(h, [&](const auto& r) { n.on_stride(r); }); break;
+        case PN_REC_STRIDE: with_record<pn_stride_t>(h, PEDNAV_SDK_CALL_HOOK(on_stride)); break;
         default: break;  // a record type of a newer minor: ignore
     }
 }
+#undef PEDNAV_SDK_CALL_HOOK
 
 template <class T>
 struct Trampolines {
@@ -161,10 +194,10 @@ struct Trampolines {
     }
     static pn_status_t process(void* self, const pn_record_header_t* const* records, uint32_t count,
                                const pnp_sink_t* sink, pn_error_t* err) noexcept {
-        Node& n = *self_of(self)->node;
+        T& n = *self_of(self)->node;
         n.bind_sink_(sink);
         try {
-            for (uint32_t i = 0; i < count; ++i) dispatch(n, records[i]);
+            for (uint32_t i = 0; i < count; ++i) dispatch<T>(n, records[i]);
         } catch (...) {
             n.bind_sink_(nullptr);
             return status_from_exception(err, T::kId);

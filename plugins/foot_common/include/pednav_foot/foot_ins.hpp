@@ -107,6 +107,8 @@ private:
     void begin_stance(int64_t t_ns);
 
     FootInsConfig cfg_;
+    double heel_strike_rad_;
+    double skip_cos_half_;          // swing samples with |cos(angle/2) from the anchor| above this are not pitched
     Ekf15 ekf_;
     Ekf15::Noise noise_;
     bool started_ = false;
@@ -134,7 +136,8 @@ private:
     Quat anchor_q_ = Quat::Identity();
     double anchor_cov_[3] = {0, 0, 0};
     double moving_s_ = 0;           // motion time since the last counted stance
-    double max_toe_up_rad_ = 0;     // largest toe-up pitch since the last counted stance
+    double max_toe_up_rad_ = 0;     // largest toe-up pitch since the last counted stance, as far as
+                                    // needed to tell whether it reaches heel_strike_deg
     bool level_step_ = true;        // class of the step that led to the current stance
     double h_ref_ = 0;              // HUPT reference height
     LevelMemory levels_;            // heights of the level floors stood on

@@ -105,6 +105,14 @@ inline double heading_of(const Quat& q_enu_from_body) {
     return atan2_fast(r01, r11) + M_PI / 2.0;
 }
 
+// The same heading from R = q.toRotationMatrix() (the same bits: the four
+// entries above are Eigen's expressions).
+inline double heading_of(const Mat3& r_enu_from_body) {
+    const double r00 = r_enu_from_body(0, 0), r10 = r_enu_from_body(1, 0);
+    if (r00 * r00 + r10 * r10 > 0.01) return atan2_fast(r00, r10);
+    return atan2_fast(r_enu_from_body(0, 1), r_enu_from_body(1, 1)) + M_PI / 2.0;
+}
+
 // Attitude whose body "up" is the measured specific force at rest and whose
 // body x axis (or y when x is near vertical) projected level points at
 // `heading_rad` (clockwise from north). Works for any sensor orientation.

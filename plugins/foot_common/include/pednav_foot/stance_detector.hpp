@@ -1,21 +1,31 @@
 // Foot stance (zero-velocity) detectors with windows in seconds, O(1) per
 // sample, no allocation after construction.
 //
-// Both detectors are two centred-window stages:
+// Both detectors are chains of time-centred windows:
 //   1. a per-sample test statistic over a centred window of window_s, turned
 //      into a 0/1 stance decision;
-//   2. a majority (binary median) filter over a centred window of
+//   2. (optional) an adaptive threshold: the running minimum of the statistic
+//      over a centred window of adaptive_window_s;
+//   3. a majority (binary median) filter over a centred window of
 //      median_window_s.
-// The decision about the sample at t is known once input up to
-// t + window_s/2 + median_window_s/2 has arrived: that is latency_ns().
+// The window of the sample at t_c holds every sample with |t - t_c| <= half
+// the window; a stage finishes the centre t_c once its input has reached
+// t_c + half (or the raw input has reached the sum of the half windows up to
+// it: a watermark). The decision about the sample at t is known once input up
+// to t + window_s/2 + adaptive_window_s/2 + median_window_s/2 has arrived:
+// that is latency_ns().
+//
+// The three stages run as one pass per input sample over two rings (the raw
+// samples of stage 1; the statistics and stage-2 decisions of stages 2 and 3,
+// indexed by the same sample number), with their indices in the object and
+// no callbacks between the stages.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <vector>
-
-#include "centred_window.hpp"
+#include <memory>
+#include <type_traits>
 
 namespace pednav::foot {
 
@@ -68,88 +78,10 @@ struct ShoeConfig : StanceWindows {
     ShoeConfig() : StanceWindows{0.06, 0.05, 1.0, 3.0, 60.0} {}
 };
 
-namespace detail {
-
-struct ImuElem {
-    int64_t t_ns;
-    double a[3];
-    double w2;   // |w|^2
-    double am;   // |a| - 9.81 (offset keeps the running sums well conditioned)
-};
-
-struct MultiAcc {
-    double s1 = 0, s2 = 0;
-    double n = 0;
-    void add(const ImuElem& e) { s1 += e.am; s2 += e.am * e.am; n += 1; }
-    void remove(const ImuElem& e) { s1 -= e.am; s2 -= e.am * e.am; n -= 1; }
-    void reset() { *this = MultiAcc{}; }
-};
-
-struct ShoeAcc {
-    double sa[3] = {0, 0, 0};
-    double sa2 = 0, sw2 = 0, n = 0;
-    void add(const ImuElem& e) {
-        for (int i = 0; i < 3; ++i) sa[i] += e.a[i];
-        sa2 += e.a[0] * e.a[0] + e.a[1] * e.a[1] + e.a[2] * e.a[2];
-        sw2 += e.w2;
-        n += 1;
-    }
-    void remove(const ImuElem& e) {
-        for (int i = 0; i < 3; ++i) sa[i] -= e.a[i];
-        sa2 -= e.a[0] * e.a[0] + e.a[1] * e.a[1] + e.a[2] * e.a[2];
-        sw2 -= e.w2;
-        n -= 1;
-    }
-    void reset() { *this = ShoeAcc{}; }
-};
-
-struct StatElem {
-    int64_t t_ns;
-    double statistic;
-    uint64_t seq;
-    bool fixed;  // the fixed-threshold decision
-};
-// Sliding minimum of StatElem::statistic: monotone deque in a ring.
-struct MinAcc {
-    std::vector<StatElem> dq;
-    size_t mask = 0, head = 0, tail = 0;  // [head, tail)
-    void init(size_t capacity) {
-        size_t cap = 16;
-        while (cap < capacity) cap <<= 1;
-        dq.resize(cap);
-        mask = cap - 1;
-    }
-    void add(const StatElem& e) {
-        while (tail > head && dq[(tail - 1) & mask].statistic >= e.statistic) --tail;
-        dq[tail++ & mask] = e;
-    }
-    void remove(const StatElem& e) {
-        if (tail > head && dq[head & mask].seq == e.seq) ++head;
-    }
-    void reset() { head = tail = 0; }
-    double min() const { return tail > head ? dq[head & mask].statistic : HUGE_VAL; }
-};
-
-struct VoteElem {
-    int64_t t_ns;
-    double statistic;
-    bool stance;
-};
-struct VoteAcc {
-    int ones = 0, n = 0;
-    void add(const VoteElem& e) { ones += e.stance ? 1 : 0; ++n; }
-    void remove(const VoteElem& e) { ones -= e.stance ? 1 : 0; --n; }
-    void reset() { *this = VoteAcc{}; }
-};
-
-inline size_t capacity_for(double window_s, double rate_hz) {
-    return static_cast<size_t>(std::ceil(window_s * rate_hz)) + 64;
-}
-
-}  // namespace detail
-
 // Ring capacities are sized for max_rate_hz (samples per second the detector
-// can take without shrinking its windows).
+// can take without shrinking its windows). When the input comes faster, a
+// full stage shrinks its windows from the left (finishing its oldest centre
+// if needed).
 class StanceDetector {
 public:
     enum class Kind { MultiCondition, Shoe };
@@ -157,102 +89,97 @@ public:
     StanceDetector(const MultiConditionConfig& c, double max_rate_hz);
     StanceDetector(const ShoeConfig& c, double max_rate_hz);
 
-    int64_t latency_ns() const { return stat_.half_ns() + adapt_.half_ns() + vote_.half_ns(); }
+    int64_t latency_ns() const { return h1_ + h2_ + h3_; }
 
     // Feeds one IMU sample (SI, sensor axes); calls out(const StanceDecision&)
-    // for each sample whose decision became final.
+    // for each sample whose decision became final, in time order.
     template <class Out>
     void push(int64_t t_ns, const double accel_mps2[3], const double gyro_radps[3], Out&& out) {
-        detail::ImuElem e;
-        e.t_ns = t_ns;
-        e.a[0] = accel_mps2[0];
-        e.a[1] = accel_mps2[1];
-        e.a[2] = accel_mps2[2];
-        e.w2 = gyro_radps[0] * gyro_radps[0] + gyro_radps[1] * gyro_radps[1] + gyro_radps[2] * gyro_radps[2];
-        e.am = std::sqrt(e.a[0] * e.a[0] + e.a[1] * e.a[1] + e.a[2] * e.a[2]) - 9.81;
-        stat_.push(e, [&](const detail::ImuElem& c, const StatAcc& acc) { vote(c, acc, out); });
-        // Every stage-1 result up to t - h1 is out: later stages may finish
-        // their centres against that watermark.
-        int64_t mark = t_ns - stat_.half_ns();
-        if (adaptive_) {
-            adapt_.advance(mark, [&](const detail::StatElem& x, const detail::MinAcc& m) { adapt(x, m, out); });
-            mark -= adapt_.half_ns();
+        if (kind_ == Kind::Shoe) {
+            if (adaptive_) push_impl<true, true>(t_ns, accel_mps2, gyro_radps, out);
+            else push_impl<true, false>(t_ns, accel_mps2, gyro_radps, out);
+        } else {
+            if (adaptive_) push_impl<false, true>(t_ns, accel_mps2, gyro_radps, out);
+            else push_impl<false, false>(t_ns, accel_mps2, gyro_radps, out);
         }
-        vote_.advance(mark, [&](const detail::VoteElem& v, const detail::VoteAcc& a) { decide(v, a, out); });
     }
 
+    // End of stream: finishes every pending sample with truncated windows.
     template <class Out>
     void flush(Out&& out) {
-        stat_.flush([&](const detail::ImuElem& c, const StatAcc& acc) { vote(c, acc, out); });
-        adapt_.flush([&](const detail::StatElem& e, const detail::MinAcc& m) { adapt(e, m, out); });
-        vote_.flush([&](const detail::VoteElem& v, const detail::VoteAcc& a) { decide(v, a, out); });
+        if (kind_ == Kind::Shoe) {
+            if (adaptive_) flush_impl<true, true>(out);
+            else flush_impl<true, false>(out);
+        } else {
+            if (adaptive_) flush_impl<false, true>(out);
+            else flush_impl<false, false>(out);
+        }
     }
-
-    // Stage-1 decision and statistic for one centre (exposed for tests).
-    bool test(const detail::ImuElem& centre, double& statistic) const;
 
 private:
     StanceDetector(Kind kind, const StanceWindows& windows, double max_rate_hz);
-    struct StatAcc {
-        detail::MultiAcc multi;
-        detail::ShoeAcc shoe;
-        bool is_shoe = false;
-        void add(const detail::ImuElem& e) { is_shoe ? shoe.add(e) : multi.add(e); }
-        void remove(const detail::ImuElem& e) { is_shoe ? shoe.remove(e) : multi.remove(e); }
-        void reset() { multi.reset(); shoe.reset(); }
+
+    // Stage-1 input: one raw sample (its time is in t1_).
+    struct In {
+        double a[3];
+        double a2;  // |a|^2
+        double w2;  // |w|^2
+        double am;  // |a| - 9.81 (offset keeps the running sums well conditioned)
     };
 
-    template <class Out>
-    void vote(const detail::ImuElem& c, const StatAcc& acc, Out& out) {
-        acc_view_ = &acc;
-        detail::VoteElem v;
-        v.t_ns = c.t_ns;
-        v.stance = test(c, v.statistic);
-        if (!adaptive_) {
-            vote_.push(v, [&](const detail::VoteElem& e, const detail::VoteAcc& a) { decide(e, a, out); });
-            return;
+    // ---- stage 1: running sums over the centred window -------------------
+    struct ShoeSums {
+        double a[3] = {0, 0, 0};
+        double aa = 0, w2 = 0;
+        void add(const In& e) {
+            a[0] += e.a[0];
+            a[1] += e.a[1];
+            a[2] += e.a[2];
+            aa += e.a2;
+            w2 += e.w2;
         }
-        adapt_.push(detail::StatElem{c.t_ns, v.statistic, seq_++, v.stance},
-                    [&](const detail::StatElem& e, const detail::MinAcc& m) { adapt(e, m, out); });
+        void remove(const In& e) {
+            a[0] -= e.a[0];
+            a[1] -= e.a[1];
+            a[2] -= e.a[2];
+            aa -= e.a2;
+            w2 -= e.w2;
+        }
+    };
+    struct MultiSums {
+        double m1 = 0, m2 = 0;
+        void add(const In& e) {
+            m1 += e.am;
+            m2 += e.am * e.am;
+        }
+        void remove(const In& e) {
+            m1 -= e.am;
+            m2 -= e.am * e.am;
+        }
+    };
+    template <bool Shoe>
+    using Sums = std::conditional_t<Shoe, ShoeSums, MultiSums>;
+    template <bool Shoe>
+    Sums<Shoe>& sums() {
+        if constexpr (Shoe) return shoe_sums_;
+        else return multi_sums_;
     }
 
-    template <class Out>
-    void adapt(const detail::StatElem& e, const detail::MinAcc& m, Out& out) {
-        detail::VoteElem v;
-        v.t_ns = e.t_ns;
-        v.statistic = e.statistic;
-        v.stance = e.fixed || (e.statistic < adaptive_max_ && e.statistic <= adaptive_ratio_ * m.min());
-        vote_.push(v, [&](const detail::VoteElem& x, const detail::VoteAcc& a) { decide(x, a, out); });
+    // Recomputes the sums from the window contents, bounding the round-off
+    // that add/remove pairs accumulate over a long stream.
+    template <bool Shoe>
+    void rebuild1() {
+        since_rebuild_ = 0;
+        Sums<Shoe> x{};
+        for (uint64_t i = lo1_; i < hi1_; ++i) x.add(in_[i & mask1_]);
+        sums<Shoe>() = x;
     }
 
-    template <class Out>
-    static void decide(const detail::VoteElem& e, const detail::VoteAcc& a, Out& out) {
-        bool s = e.stance;
-        if (2 * a.ones > a.n) s = true;
-        else if (2 * a.ones < a.n) s = false;
-        out(StanceDecision{e.t_ns, s, e.statistic});
-    }
-
-    Kind kind_;
-    MultiConditionConfig multi_{};
-    ShoeConfig shoe_{};
-    CentredWindow<detail::ImuElem, StatAcc> stat_;
-    CentredWindow<detail::StatElem, detail::MinAcc> adapt_;
-    CentredWindow<detail::VoteElem, detail::VoteAcc> vote_;
-    bool adaptive_ = false;
-    double adaptive_ratio_ = 0, adaptive_max_ = 0;
-    uint64_t seq_ = 0;
-    const StatAcc* acc_view_ = nullptr;
-    double shoe_ia_ = 0, shoe_iw_ = 0;  // 1 / sigma_a^2, 1 / sigma_w^2
-};
-
-inline bool StanceDetector::test(const detail::ImuElem& centre, double& statistic) const {
-    const StatAcc& acc = *acc_view_;
-    if (kind_ == Kind::MultiCondition) {
-        const detail::MultiAcc& m = acc.multi;
+    // Stage-1 statistic and fixed decision of `centre` from the sums over n samples.
+    bool test(const MultiSums& m, const In& centre, double n, double& statistic) const {
         // foot-imu-zupt-zaru-ekf eq. (18)-(19): mean and variance of |a| over the window.
-        const double mean = m.s1 / m.n;
-        const double var = std::max(0.0, m.s2 / m.n - mean * mean);
+        const double mean = m.m1 / n;
+        const double var = std::max(0.0, m.m2 / n - mean * mean);
         const double sd = std::sqrt(var);
         const double a_norm = centre.am + 9.81;
         const bool c1 = a_norm > multi_.accel_min_mps2 && a_norm < multi_.accel_max_mps2;  // eq. (17)
@@ -262,14 +189,242 @@ inline bool StanceDetector::test(const detail::ImuElem& centre, double& statisti
         statistic = std::max(sd / multi_.accel_std_max_mps2, std::sqrt(centre.w2) / multi_.gyro_max_radps);
         return c1 && c2 && c3;                                                               // eq. (23)
     }
-    const detail::ShoeAcc& s = acc.shoe;
-    const double n = s.n;
-    const double mean_norm = std::sqrt(s.sa[0] * s.sa[0] + s.sa[1] * s.sa[1] + s.sa[2] * s.sa[2]) / n;
-    const double g = shoe_.gravity_mps2 > 0 ? shoe_.gravity_mps2 : mean_norm;
-    // sum_j |a_j - g u|^2 = sum |a_j|^2 - 2 g n |mean a| + n g^2, with u = mean a / |mean a|.
-    const double sum_acc = std::max(0.0, s.sa2 - 2.0 * g * n * mean_norm + n * g * g);
-    statistic = (sum_acc * shoe_ia_ + s.sw2 * shoe_iw_) / n;
-    return statistic < shoe_.threshold;
-}
+    bool test(const ShoeSums& x, const In&, double n, double& statistic) const {
+        const double mean_norm = std::sqrt(x.a[0] * x.a[0] + x.a[1] * x.a[1] + x.a[2] * x.a[2]) / n;
+        const double g = shoe_.gravity_mps2 > 0 ? shoe_.gravity_mps2 : mean_norm;
+        // sum_j |a_j - g u|^2 = sum |a_j|^2 - 2 g n |mean a| + n g^2, with u = mean a / |mean a|.
+        const double sum_acc = std::max(0.0, x.aa - 2.0 * g * n * mean_norm + n * g * g);
+        statistic = (sum_acc * shoe_ia_ + x.w2 * shoe_iw_) / n;
+        return statistic < shoe_.threshold;
+    }
+
+    // Finishes the stage-1 centre c1_ and hands its result to the next stage.
+    // The sums are updated in a local copy (the ring stores could alias them).
+    template <bool Shoe, bool Adaptive, class Out>
+    void emit1(Out& out) {
+        const In* ring = in_.get();
+        const int64_t* tr = t1_.get();
+        const uint64_t mask = mask1_, n = n1_, c = c1_;
+        const int64_t t = tr[c & mask];
+        const int64_t t_hi = t + h1_, t_lo = t - h1_;
+        uint64_t hi = hi1_, lo = lo1_;
+        Sums<Shoe> x = sums<Shoe>();
+        while (hi < n && tr[hi & mask] <= t_hi) {
+            x.add(ring[hi & mask]);
+            ++hi;
+        }
+        while (lo < c && tr[lo & mask] < t_lo) {
+            x.remove(ring[lo & mask]);
+            ++lo;
+        }
+        hi1_ = hi;
+        lo1_ = lo;
+        c1_ = c + 1;
+        sums<Shoe>() = x;
+        if (++since_rebuild_ >= 8192) {
+            rebuild1<Shoe>();
+            x = sums<Shoe>();
+        }
+        double statistic;
+        const bool fixed = test(x, ring[c & mask], static_cast<double>(hi - lo), statistic);
+        if (Adaptive) push2(t, statistic, fixed, out);
+        else push3_new(t, statistic, fixed, out);
+    }
+
+    // ---- stage 2: running minimum of the statistic (monotone deque) -------
+    template <class Out>
+    void push2(int64_t t, double statistic, bool fixed, Out& out) {
+        if (n2_ - lo2_ >= cap2_) make_room2(out);
+        const uint64_t i = n2_ & maskd_;
+        td_[i] = t;
+        st_[i] = statistic;
+        fx_[i] = fixed;
+        const uint64_t n = ++n2_;
+        while (c2_ < n && t >= td_[c2_ & maskd_] + h2_) emit2(out);
+    }
+
+    template <class Out>
+    void emit2(Out& out) {
+        const int64_t* tr = td_.get();
+        const double* st = st_.get();
+        uint64_t* dq = dq_.get();
+        const uint64_t c = c2_, n = n2_, mask = maskd_, qmask = dq_mask_;
+        const int64_t t = tr[c & mask];
+        const int64_t t_hi = t + h2_, t_lo = t - h2_;
+        uint64_t hi = hi2_, lo = lo2_, head = dq_head_, tail = dq_tail_;
+        while (hi < n && tr[hi & mask] <= t_hi) {
+            const double x = st[hi & mask];
+            while (tail > head && st[dq[(tail - 1) & qmask] & mask] >= x) --tail;
+            dq[tail & qmask] = hi;
+            ++tail;
+            ++hi;
+        }
+        while (lo < c && tr[lo & mask] < t_lo) {
+            if (tail > head && dq[head & qmask] == lo) ++head;
+            ++lo;
+        }
+        hi2_ = hi;
+        lo2_ = lo;
+        dq_head_ = head;
+        dq_tail_ = tail;
+        c2_ = c + 1;
+        // (The deque holds exactly the window's strict suffix minima whatever
+        // the history: it needs no periodic rebuild.)
+        const double s = st[c & mask];
+        const double m = tail > head ? st[dq[head & qmask] & mask] : HUGE_VAL;
+        const bool stance = fx_[c & mask] || (s < adaptive_max_ && s <= adaptive_ratio_ * m);
+        push3(c, t, stance, out);
+    }
+
+    template <class Out>
+    void make_room2(Out& out) {
+        while (n2_ - lo2_ >= cap2_) {
+            if (lo2_ < c2_ && lo2_ < hi2_) {
+                if (dq_tail_ > dq_head_ && dq_[dq_head_ & dq_mask_] == lo2_) ++dq_head_;
+                ++lo2_;
+            } else {
+                emit2(out);
+            }
+        }
+    }
+
+    // ---- stage 3: majority vote -------------------------------------------
+    // Sample i at time t (its statistic already in the ring) enters the vote.
+    template <class Out>
+    void push3(uint64_t i, int64_t t, bool stance, Out& out) {
+        if (n3_ - lo3_ >= cap3_) make_room3(out);
+        sn_[i & maskd_] = stance;
+        const uint64_t n = n3_ = i + 1;
+        while (c3_ < n && t >= td_[c3_ & maskd_] + h3_) emit3(out);
+    }
+    // Without the adaptive stage: the stage-1 result goes straight to the vote.
+    template <class Out>
+    void push3_new(int64_t t, double statistic, bool fixed, Out& out) {
+        if (n3_ - lo3_ >= cap3_) make_room3(out);
+        const uint64_t i = n3_ & maskd_;
+        td_[i] = t;
+        st_[i] = statistic;
+        fx_[i] = sn_[i] = fixed;
+        const uint64_t n = ++n3_;
+        while (c3_ < n && t >= td_[c3_ & maskd_] + h3_) emit3(out);
+    }
+
+    template <class Out>
+    void emit3(Out& out) {
+        const int64_t* tr = td_.get();
+        const bool* sn = sn_.get();
+        const uint64_t c = c3_, n = n3_, mask = maskd_;
+        const int64_t t = tr[c & mask];
+        const int64_t t_hi = t + h3_, t_lo = t - h3_;
+        uint64_t hi = hi3_, lo = lo3_;
+        int64_t ones = ones_;
+        while (hi < n && tr[hi & mask] <= t_hi) {
+            ones += sn[hi & mask];
+            ++hi;
+        }
+        while (lo < c && tr[lo & mask] < t_lo) {
+            ones -= sn[lo & mask];
+            ++lo;
+        }
+        hi3_ = hi;
+        lo3_ = lo;
+        ones_ = ones;
+        c3_ = c + 1;
+        const int64_t count = static_cast<int64_t>(hi - lo);
+        bool s = sn[c & mask];
+        if (2 * ones > count) s = true;
+        else if (2 * ones < count) s = false;
+        out(StanceDecision{t, s, st_[c & mask]});
+    }
+
+    template <class Out>
+    void make_room3(Out& out) {
+        while (n3_ - lo3_ >= cap3_) {
+            if (lo3_ < c3_ && lo3_ < hi3_) {
+                ones_ -= sn_[lo3_ & maskd_];
+                ++lo3_;
+            } else {
+                emit3(out);
+            }
+        }
+    }
+
+    // ---- the pass per sample ----------------------------------------------
+    template <bool Shoe, bool Adaptive, class Out>
+    void make_room1(Out& out) {
+        while (n1_ - lo1_ >= cap1_) {
+            if (lo1_ < c1_ && lo1_ < hi1_) {
+                sums<Shoe>().remove(in_[lo1_ & mask1_]);
+                ++lo1_;
+            } else {
+                emit1<Shoe, Adaptive>(out);
+            }
+        }
+    }
+
+    template <bool Shoe, bool Adaptive, class Out>
+    void push_impl(int64_t t_ns, const double* a, const double* w, Out& out) {
+        if (n1_ - lo1_ >= cap1_) make_room1<Shoe, Adaptive>(out);
+        const uint64_t k = n1_ & mask1_;
+        t1_[k] = t_ns;
+        In& e = in_[k];
+        e.a[0] = a[0];
+        e.a[1] = a[1];
+        e.a[2] = a[2];
+        e.a2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+        e.w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+        e.am = std::sqrt(e.a2) - 9.81;
+        const uint64_t n = ++n1_;
+        while (c1_ < n && t_ns >= t1_[c1_ & mask1_] + h1_) emit1<Shoe, Adaptive>(out);
+        // Every stage-1 result up to t - h1 is out: later stages may finish
+        // their centres against that watermark.
+        int64_t mark = t_ns - h1_;
+        if (Adaptive) {
+            while (c2_ < n2_ && td_[c2_ & maskd_] + h2_ <= mark) emit2(out);
+            mark -= h2_;
+        }
+        while (c3_ < n3_ && td_[c3_ & maskd_] + h3_ <= mark) emit3(out);
+    }
+
+    template <bool Shoe, bool Adaptive, class Out>
+    void flush_impl(Out& out) {
+        while (c1_ < n1_) emit1<Shoe, Adaptive>(out);
+        if (Adaptive)
+            while (c2_ < n2_) emit2(out);
+        while (c3_ < n3_) emit3(out);
+    }
+
+    Kind kind_;
+    MultiConditionConfig multi_{};
+    ShoeConfig shoe_{};
+    bool adaptive_ = false;
+    double adaptive_ratio_ = 0, adaptive_max_ = 0;
+    double shoe_ia_ = 0, shoe_iw_ = 0;  // 1 / sigma_a^2, 1 / sigma_w^2
+    int64_t h1_ = 0, h2_ = 0, h3_ = 0;  // half windows
+
+    // Stage s holds the samples [lo_s, n_s), its running result covers
+    // [lo_s, hi_s), its next centre is c_s.
+    // Stage 1: a ring of raw samples.
+    std::unique_ptr<int64_t[]> t1_;
+    std::unique_ptr<In[]> in_;
+    uint64_t cap1_ = 0, mask1_ = 0;
+    uint64_t n1_ = 0, c1_ = 0, lo1_ = 0, hi1_ = 0;
+    uint32_t since_rebuild_ = 0;
+    ShoeSums shoe_sums_;
+    MultiSums multi_sums_;
+
+    // Stages 2 and 3 share one ring indexed by sample number: time,
+    // statistic, fixed decision (stage 1), decision with the adaptive
+    // threshold (stage 2).
+    std::unique_ptr<int64_t[]> td_;
+    std::unique_ptr<double[]> st_;
+    std::unique_ptr<bool[]> fx_, sn_;
+    uint64_t maskd_ = 0;
+    uint64_t cap2_ = 0, n2_ = 0, c2_ = 0, lo2_ = 0, hi2_ = 0;
+    std::unique_ptr<uint64_t[]> dq_;  // sample numbers of the deque, in a ring
+    uint64_t dq_mask_ = 0, dq_head_ = 0, dq_tail_ = 0;
+    uint64_t cap3_ = 0, n3_ = 0, c3_ = 0, lo3_ = 0, hi3_ = 0;
+    int64_t ones_ = 0;
+};
 
 }  // namespace pednav::foot
