@@ -20,18 +20,19 @@ public:
         size_t c = 1;
         while (c < initial_capacity) c <<= 1;
         slots_.resize(c);
+        mask_ = c - 1;
     }
 
     void push(const pn_record_header_t* r) {
         if (end_ - begin_ == slots_.size()) grow();
-        Slot& s = slots_[end_ & (slots_.size() - 1)];
+        Slot& s = slots_[end_ & mask_];
         std::memcpy(s.bytes, r, r->struct_size);
         ++end_;
     }
     Seq begin() const { return begin_; }
     Seq end() const { return end_; }
     const pn_record_header_t* at(Seq seq) const {
-        return reinterpret_cast<const pn_record_header_t*>(slots_[seq & (slots_.size() - 1)].bytes);
+        return reinterpret_cast<const pn_record_header_t*>(slots_[seq & mask_].bytes);
     }
     // Frees every slot before `seq` (all consumers are past it).
     void release_until(Seq seq) {
@@ -49,9 +50,11 @@ private:
         for (Seq s = begin_; s < end_; ++s)
             bigger[s & (bigger.size() - 1)] = slots_[s & (slots_.size() - 1)];
         slots_.swap(bigger);
+        mask_ = slots_.size() - 1;
     }
 
     std::vector<Slot> slots_;
+    size_t mask_ = 0;  // slots_.size() - 1 (a power of two)
     Seq begin_ = 0, end_ = 0;
 };
 
