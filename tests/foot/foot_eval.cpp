@@ -56,8 +56,10 @@ nlohmann::json ekf_patch(const nlohmann::json& params) {
     return p;
 }
 
-ReplayResult run_file(const std::string& path, const std::string& config_json, double* rate_hz) {
-    const io::SensorLog log = io::read_sensor_file(path);
+namespace {
+// Replays a read log through `config_json` at the log's IMU rate.
+ReplayResult run_log(const io::SensorLog& log, const std::string& config_json, const std::string& what,
+                     double* rate_hz = nullptr) {
     auto doc = nlohmann::json::parse(config_json);
     const io::StreamInfo* s = log.stream("accel");
     const double rate = s ? s->median_rate_hz : 0.0;
@@ -67,8 +69,13 @@ ReplayResult run_file(const std::string& path, const std::string& config_json, d
     o.config_json = doc.dump();
     o.plugin_dirs = {PEDNAV_PLUGIN_OUTPUT_DIR};
     ReplayResult r = replay(o, io::merged_records(log));
-    if (!r.error.empty()) throw std::runtime_error(path + ": " + r.error);
+    if (!r.error.empty()) throw std::runtime_error(what + ": " + r.error);
     return r;
+}
+}  // namespace
+
+ReplayResult run_file(const std::string& path, const std::string& config_json, double* rate_hz) {
+    return run_log(io::read_sensor_file(path), config_json, path, rate_hz);
 }
 
 Stats stats_of(const std::vector<double>& v) {
@@ -117,25 +124,11 @@ XioScore score_xio(const std::string& name, const std::string& config_json) {
     return sc;
 }
 
-namespace {
-ReplayResult run_log(const io::SensorLog& log, const std::string& config_json) {
-    auto doc = nlohmann::json::parse(config_json);
-    const io::StreamInfo* s = log.stream("accel");
-    doc["imu_rate_hz"] = s ? s->median_rate_hz : 0.0;
-    ReplayOptions o;
-    o.config_json = doc.dump();
-    o.plugin_dirs = {PEDNAV_PLUGIN_OUTPUT_DIR};
-    ReplayResult r = replay(o, io::merged_records(log));
-    if (!r.error.empty()) throw std::runtime_error(r.error);
-    return r;
-}
-}  // namespace
-
 ClipScore score_xio_clipped(const std::string& name, const std::string& config_json, double clip_radps,
                             bool tell_range) {
     ClipScore sc;
     io::SensorLog log = io::read_sensor_file(data_dir() + "/xio-gait-ngimu/" + name + ".csv");
-    const ReplayResult ref = run_log(log, config_json);
+    const ReplayResult ref = run_log(log, config_json, name);
     for (auto& r : log.imu)
         for (double& g : r.gyro_radps)
             if (std::abs(g) > clip_radps) {
@@ -144,7 +137,7 @@ ClipScore score_xio_clipped(const std::string& name, const std::string& config_j
             }
     auto doc = nlohmann::json::parse(config_json);
     if (tell_range) doc["pipelines"]["foot"]["attitude_estimator"]["params"]["gyro_range_radps"] = clip_radps;
-    const ReplayResult r = run_log(log, doc.dump());
+    const ReplayResult r = run_log(log, doc.dump(), name + " clipped");
     sc.strides = r.strides.size();
     sc.strides_unclipped = ref.strides.size();
     const size_t n = std::min(sc.strides, sc.strides_unclipped);
