@@ -212,6 +212,22 @@ TEST_CASE("Xsens: PacketCounter / rate, unwrapped at 65536; a 10 s gap is report
     CHECK(log.stream("accel")->gaps == 1);
 }
 
+TEST_CASE("Xsens: a pressure column filled on every 10th row; the other rows keep their IMU sample") {
+    // The empty pressure cell is the last of a tab-separated row: a field
+    // of its own, not a truncated row.
+    const std::string dir = temp_dir();
+    std::string text =
+        "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tPressure\n";
+    for (int c = 0; c < 100; ++c)
+        text += std::to_string(c) + "\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\t" + (c % 10 == 0 ? "101325" : "") + "\n";
+    const SensorLog log = read_sensor_file(write_file(dir, "sparse_pressure.txt", text));
+    CHECK(log.format == "xsens-mtw-tsv");
+    CHECK(log.imu.size() == 100);
+    REQUIRE(log.baro.size() == 10);
+    CHECK(log.baro[1].pressure_pa == doctest::Approx(101325.0));
+    CHECK(log.issues.empty());
+}
+
 TEST_CASE("x-io CSV: deg/s and g converted, a repeated row dropped") {
     const std::string dir = temp_dir();
     const std::string text =

@@ -31,7 +31,9 @@ struct RowContext {
     std::string error;
 };
 
-CellResult parse_vec(RowContext& ctx, const Vec3Spec& v, double out[3]) {
+// Empty cells make the sample absent in sparse multi-rate tables, and always
+// for the streams a row may lack (magnetometer, pressure: `optional`).
+CellResult parse_vec(RowContext& ctx, const Vec3Spec& v, double out[3], bool optional = false) {
     double in[3];
     int empty = 0;
     NumberStatus status[3];
@@ -39,7 +41,7 @@ CellResult parse_vec(RowContext& ctx, const Vec3Spec& v, double out[3]) {
         status[i] = parse_number(ctx.fields[static_cast<size_t>(v.col[i])], &in[i]);
         if (status[i] == NumberStatus::empty) ++empty;
     }
-    if (ctx.spec.empty_cells_mean_absent && empty == 3) return CellResult::absent;
+    if ((optional || ctx.spec.empty_cells_mean_absent) && empty == 3) return CellResult::absent;
     for (int i = 0; i < 3; ++i) {
         if (status[i] != NumberStatus::ok) {
             const auto c = static_cast<size_t>(v.col[i]);
@@ -53,10 +55,10 @@ CellResult parse_vec(RowContext& ctx, const Vec3Spec& v, double out[3]) {
     return CellResult::ok;
 }
 
-CellResult parse_scalar(RowContext& ctx, int col, double* out) {
+CellResult parse_scalar(RowContext& ctx, int col, double* out, bool optional = false) {
     const auto c = static_cast<size_t>(col);
     const NumberStatus status = parse_number(ctx.fields[c], out);
-    if (status == NumberStatus::empty && ctx.spec.empty_cells_mean_absent) return CellResult::absent;
+    if (status == NumberStatus::empty && (optional || ctx.spec.empty_cells_mean_absent)) return CellResult::absent;
     if (status != NumberStatus::ok) {
         ctx.error = describe_bad_number(status, ctx.fields[c], ctx.spec.names[c]);
         return CellResult::bad;
@@ -89,7 +91,9 @@ void read_table(const TextFile& file, const TableSpec& spec, LogBuilder& builder
         const size_t line_no = index + 1;
         const std::string_view line = trim(file.lines[index]);
         if (line.empty() || is_comment(spec, line)) continue;
-        split_into(line, spec.delim, fields);
+        // Split the untrimmed line: a trailing empty cell of a tab-separated
+        // row is a field (split_into trims each field).
+        split_into(spec.delim == ' ' ? line : std::string_view(file.lines[index]), spec.delim, fields);
         if (fields.size() != spec.column_count) {
             char text[160];
             std::snprintf(text, sizeof text, "%s: %zu fields, the header has %zu",
@@ -137,14 +141,14 @@ void read_table(const TextFile& file, const TableSpec& spec, LogBuilder& builder
             has_imu = ra == CellResult::ok;
         }
         if (spec.mag.present()) {
-            const CellResult rm = parse_vec(ctx, spec.mag, m);
+            const CellResult rm = parse_vec(ctx, spec.mag, m, true);
             if (rm == CellResult::bad) {
                 builder.bad_row(line_no, "magnetometer sample: " + ctx.error, stream_bit(stream_mag));
             }
             has_mag = rm == CellResult::ok;
         }
         if (spec.pressure_col >= 0) {
-            const CellResult rp = parse_scalar(ctx, spec.pressure_col, &p);
+            const CellResult rp = parse_scalar(ctx, spec.pressure_col, &p, true);
             if (rp == CellResult::bad)
                 builder.bad_row(line_no, "pressure sample: " + ctx.error, stream_bit(stream_pressure));
             has_p = rp == CellResult::ok;
