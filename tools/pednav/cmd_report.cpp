@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <stdexcept>
@@ -19,6 +20,7 @@
 #include <pednav_eval/truth_readers.hpp>
 #include <pednav_io/sensor_log.hpp>
 #include <pednav_plot/eval_plot.hpp>
+#include <pednav_plot/svg.hpp>
 #include <pednav_sim/simulate.hpp>
 
 #include "cli_common.hpp"
@@ -40,9 +42,10 @@ bool exists(const std::string& p) {
     return ::stat(p.c_str(), &st) == 0;
 }
 
-void make_dir(const std::string& p) {
-    if (::mkdir(p.c_str(), 0777) != 0 && errno != EEXIST)
-        throw std::runtime_error("cannot create " + p + ": " + std::strerror(errno));
+void make_dirs(const std::string& p) {
+    std::error_code ec;
+    std::filesystem::create_directories(p, ec);
+    if (ec) throw std::runtime_error("cannot create " + p + ": " + ec.message());
 }
 
 // One walk to run: a shared recording with its truth, or a simulated route.
@@ -346,8 +349,7 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
     }
     try {
         if (data.empty()) data = default_data_dir();
-        make_dir(out);
-        make_dir(out + "/plots");
+        make_dirs(out + "/plots");
         std::map<std::string, std::string> configs;
         for (const std::string& m : mounts) {
             const std::string preset = cli::default_config_dir() + "/" + m + ".json";
@@ -385,7 +387,7 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             }
             if (!r.plot.empty()) {
                 const std::string file = "plots/" + w.mount + "-" + w.name + ".svg";
-                std::ofstream(out + "/" + file) << r.plot;
+                plot::write_text_file(out + "/" + file, r.plot);
                 r.plot = file;
             }
             std::fprintf(stderr, "%s\n",
@@ -400,8 +402,8 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             js.push_back(j);
             results.push_back(std::move(r));
         }
-        std::ofstream(out + "/accuracy.md") << markdown(results, seed);
-        std::ofstream(out + "/accuracy.json") << js.dump(2) << '\n';
+        plot::write_text_file(out + "/accuracy.md", markdown(results, seed));
+        plot::write_text_file(out + "/accuracy.json", js.dump(2) + "\n");
         std::printf("%zu walks -> %s/accuracy.md\n", results.size(), out.c_str());
         return 0;
     } catch (const std::exception& e) {

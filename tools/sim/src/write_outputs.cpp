@@ -1,8 +1,8 @@
-#include <sys/stat.h>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -21,16 +21,9 @@ std::FILE* open_or_throw(const std::string& path) {
 }
 
 void make_dirs(const std::string& dir) {
-    std::string path;
-    for (size_t i = 0; i <= dir.size(); ++i) {
-        if (i == dir.size() || dir[i] == '/') {
-            if (!path.empty()) {
-                if (::mkdir(path.c_str(), 0777) != 0 && errno != EEXIST)
-                    throw std::runtime_error("sim: cannot create " + path + ": " + std::strerror(errno));
-            }
-        }
-        if (i < dir.size()) path += dir[i];
-    }
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("sim: cannot create " + dir + ": " + ec.message());
 }
 
 nlohmann::json lonlat(const io::Origin& o, double x, double y, double z) {
