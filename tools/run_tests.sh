@@ -8,10 +8,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build
 flags=(-DCMAKE_BUILD_TYPE=Release)
-if [ "${1:-}" = "--sanitize" ]; then
-  build=build-asan
-  flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DPEDNAV_SANITIZE=ON)
-fi
+case "${1:-}" in
+  "") ;;
+  --sanitize)
+    build=build-asan
+    flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DPEDNAV_SANITIZE=ON) ;;
+  *) echo "usage: tools/run_tests.sh [--sanitize]" >&2; exit 2 ;;
+esac
 java="${PEDNAV_BUILD_JAVA:-ON}"
 flags+=("-DPEDNAV_BUILD_JAVA=$java")
 if [ "$java" = "OFF" ]; then
