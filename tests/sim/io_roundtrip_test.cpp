@@ -1,8 +1,9 @@
 // What pednav sim writes is what the engine's reader reads back.
-#include <filesystem>
 #include <doctest/doctest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <pednav_io/sensor_log.hpp>
@@ -18,7 +19,7 @@ TEST_CASE("input.csv: the canonical reader gets the simulated records back, mult
     const SimOutput out = simulate(route, o);
     CHECK(out.mag.size() == (out.imu.size() + 3) / 4);
     CHECK(out.baro.size() == (out.imu.size() + 7) / 8);
-    const std::string dir = (std::filesystem::temp_directory_path() / "pednav_sim_test_roundtrip").string();
+    const std::string dir = (std::filesystem::temp_directory_path() / ("pednav_sim_test_roundtrip_" + std::to_string(::getpid()))).string();
     write_outputs(out, route, dir);
     const pednav::io::SensorLog log = pednav::io::read_sensor_file(dir + "/input.csv");
     CHECK(log.format == "pednav-csv");

@@ -27,8 +27,18 @@ void check_derivatives(F f, double lo, double hi) {
 TEST_CASE("transition: 0 to 1 with exact derivatives, rest at both ends") {
     check_derivatives(transition, -0.2, 1.2);
     CHECK(transition(0.5).f == doctest::Approx(0.5));
-    CHECK(transition(0.0).df == 0.0);
-    CHECK(transition(1.0).ddf == 0.0);
+    // The polynomial itself comes to rest at both ends (u = 0 and 1 are
+    // clamped branches, so probe just inside): value, rate and acceleration
+    // vanish like u^4, u^3 and u^2.
+    for (double e : {1e-3, 1e-4}) {
+        const Profile a = transition(e), b = transition(1.0 - e);
+        CHECK(std::abs(a.f) < 40 * std::pow(e, 4));
+        CHECK(std::abs(a.df) < 150 * std::pow(e, 3));
+        CHECK(std::abs(a.ddf) < 450 * e * e);
+        CHECK(std::abs(1.0 - b.f) < 40 * std::pow(e, 4));
+        CHECK(std::abs(b.df) < 150 * std::pow(e, 3));
+        CHECK(std::abs(b.ddf) < 450 * e * e);
+    }
     CHECK(transition(0.5).df == doctest::Approx(35.0 / 16.0));
 }
 
