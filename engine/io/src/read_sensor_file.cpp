@@ -167,12 +167,19 @@ SensorLog read_sensor_file(const std::string& path, const ReadOptions& options) 
 }
 
 std::vector<const pn_record_header_t*> merged_records(const SensorLog& log) {
+    return merged_records(log.imu, log.mag, log.baro, log.gnss);
+}
+
+std::vector<const pn_record_header_t*> merged_records(const std::vector<pn_imu_t>& imu,
+                                                      const std::vector<pn_mag_t>& mag,
+                                                      const std::vector<pn_baro_t>& baro,
+                                                      const std::vector<pn_gnss_t>& gnss) {
     std::vector<const pn_record_header_t*> out;
-    out.reserve(log.imu.size() + log.mag.size() + log.baro.size() + log.gnss.size());
-    for (const auto& r : log.imu) out.push_back(&r.header);
-    for (const auto& r : log.mag) out.push_back(&r.header);
-    for (const auto& r : log.baro) out.push_back(&r.header);
-    for (const auto& r : log.gnss) out.push_back(&r.header);
+    out.reserve(imu.size() + mag.size() + baro.size() + gnss.size());
+    for (const auto& r : imu) out.push_back(&r.header);
+    for (const auto& r : mag) out.push_back(&r.header);
+    for (const auto& r : baro) out.push_back(&r.header);
+    for (const auto& r : gnss) out.push_back(&r.header);
     // Each stream is already in time order and they were appended IMU, MAG,
     // BARO, GNSS: a stable sort on time keeps that order at equal t_ns.
     std::stable_sort(out.begin(), out.end(), [](const pn_record_header_t* a, const pn_record_header_t* b) {

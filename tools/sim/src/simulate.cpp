@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include <pednav_io/geo.hpp>
+#include <pednav_io/sensor_log.hpp>
 #include <pednav_sim/geo.hpp>
 
 #include "gait_plan.hpp"
@@ -238,25 +239,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
 }
 
 std::vector<const pn_record_header_t*> SimOutput::records() const {
-    std::vector<const pn_record_header_t*> r;
-    r.reserve(imu.size() + mag.size() + baro.size() + gnss.size());
-    size_t i = 0, m = 0, b = 0, g = 0;
-    while (i < imu.size() || m < mag.size() || b < baro.size() || g < gnss.size()) {
-        // Earliest time first; equal times in the order IMU, MAG, BARO, GNSS.
-        int64_t best = INT64_MAX;
-        int which = -1;
-        if (i < imu.size() && imu[i].header.t_ns < best) best = imu[i].header.t_ns, which = 0;
-        if (m < mag.size() && mag[m].header.t_ns < best) best = mag[m].header.t_ns, which = 1;
-        if (b < baro.size() && baro[b].header.t_ns < best) best = baro[b].header.t_ns, which = 2;
-        if (g < gnss.size() && gnss[g].header.t_ns < best) which = 3;
-        switch (which) {
-            case 0: r.push_back(&imu[i++].header); break;
-            case 1: r.push_back(&mag[m++].header); break;
-            case 2: r.push_back(&baro[b++].header); break;
-            default: r.push_back(&gnss[g++].header); break;
-        }
-    }
-    return r;
+    return io::merged_records(imu, mag, baro, gnss);
 }
 
 }  // namespace pednav::sim

@@ -95,6 +95,11 @@ SensorLog read_sensor_file(const std::string& path, const ReadOptions& options =
 // Every input record in time order; at equal t_ns: IMU, MAG, BARO, GNSS (stable).
 // The pointers point into `log`, which must outlive the vector.
 std::vector<const pn_record_header_t*> merged_records(const SensorLog& log);
+// The same for streams held elsewhere (each already in time order).
+std::vector<const pn_record_header_t*> merged_records(const std::vector<pn_imu_t>& imu,
+                                                      const std::vector<pn_mag_t>& mag,
+                                                      const std::vector<pn_baro_t>& baro,
+                                                      const std::vector<pn_gnss_t>& gnss);
 
 // Format names accepted by ReadOptions::format (besides "auto").
 std::vector<std::string> supported_formats();
