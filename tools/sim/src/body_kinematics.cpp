@@ -40,12 +40,6 @@ Profile chain(const Profile& f, const Profile& tau) {
     return {f.f, f.df * tau.df, f.ddf * tau.df * tau.df + f.df * tau.ddf};
 }
 
-double wrap_pi(double a) {
-    while (a > M_PI) a -= 2.0 * M_PI;
-    while (a < -M_PI) a += 2.0 * M_PI;
-    return a;
-}
-
 // g = A w(t) h(phase(t)) with h = sin(k pi phase + offset): value and derivatives.
 Profile oscillation(double A, const Profile& w, const Profile& ph, double k, double offset) {
     const double arg = k * M_PI * ph.f + offset, kk = k * M_PI;

@@ -6,16 +6,6 @@
 
 namespace pednav::sim::detail {
 
-namespace {
-
-double wrap_pi(double a) {
-    while (a > M_PI) a -= 2.0 * M_PI;
-    while (a < -M_PI) a += 2.0 * M_PI;
-    return a;
-}
-
-}  // namespace
-
 KinState FootKinematics::at(double t_s) {
     while (cursor_ + 1 < plan_.phases.size() && t_s >= plan_.phases[cursor_].t1_s) ++cursor_;
     const FootPhase& ph = plan_.phases[cursor_];

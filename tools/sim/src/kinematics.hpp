@@ -2,6 +2,8 @@
 // before the sensor mounting rotation.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Dense>
 
 namespace pednav::sim::detail {
@@ -16,6 +18,13 @@ struct KinState {
     int stance = 1;
     int segment = 0;  // route segment (index of its start waypoint)
 };
+
+// An angle wrapped into [-pi, pi].
+inline double wrap_pi(double a) {
+    while (a > M_PI) a -= 2.0 * M_PI;
+    while (a < -M_PI) a += 2.0 * M_PI;
+    return a;
+}
 
 // R = Rz(yaw) Ry(pitch) Rx(roll) and the body angular rate from the angle rates.
 inline void euler_zyx(double yaw, double pitch, double roll, double dyaw, double dpitch, double droll,

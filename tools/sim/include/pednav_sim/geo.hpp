@@ -4,8 +4,7 @@
 
 namespace pednav::sim {
 
-// Pressure of the standard atmosphere at an altitude, and its inverse.
+// Pressure of the standard atmosphere at an altitude.
 double standard_pressure_pa(double altitude_m, double sea_level_pa = 101325.0);
-double standard_altitude_m(double pressure_pa, double sea_level_pa = 101325.0);
 
 }  // namespace pednav::sim
