@@ -11,9 +11,7 @@
 
 #include "cli_common.hpp"
 #include "run_pipeline.hpp"
-#ifdef PEDNAV_HAVE_PLOT
 #include "run_plot.hpp"
-#endif
 
 int pednav_cmd_run(const std::vector<std::string>& argv) {
     using namespace pednav;
@@ -112,11 +110,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         out << io::run_summary_json(log, r.describe_json, r.positions, r.strides, r.warnings).dump(2) << "\n";
         if (!out) throw std::runtime_error("cannot write " + summary);
     }
-#ifdef PEDNAV_HAVE_PLOT
     if (!plot.empty()) cli::write_run_plot(plot, input, r);
-#else
-    if (!plot.empty()) throw cli::UsageError("this build has no plot support");
-#endif
     const pn_position_t* last = r.positions.empty() ? nullptr : &r.positions.back();
     std::printf("samples %zu, positions %zu, steps %zu, distance %.2f m, latency %.3f s\n", log.imu.size(),
                 r.positions.size(), r.strides.size() ? r.strides.size() : r.steps.size(),
