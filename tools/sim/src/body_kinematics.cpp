@@ -54,7 +54,7 @@ Profile product(const Profile& a, const Profile& b) {
 
 }  // namespace
 
-BodyKinematics::BodyKinematics(const GaitPlan& plan, const Route&, BodyShape shape) : shape_(shape) {
+BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(shape) {
     // Split the foot timeline into pauses (long stances) and walking bouts.
     size_t i = 0;
     double yaw_now = plan.prints[0].yaw_enu_rad;

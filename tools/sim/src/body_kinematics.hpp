@@ -24,7 +24,7 @@ struct BodyShape {
 
 class BodyKinematics {
 public:
-    BodyKinematics(const GaitPlan& plan, const Route& route, BodyShape shape);
+    BodyKinematics(const GaitPlan& plan, BodyShape shape);
     KinState at(double t_s);
     const BodyShape& shape() const { return shape_; }
     const std::vector<double>& step_times_s() const { return steps_; }

@@ -87,7 +87,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
         throw std::runtime_error("sim: rate_hz must be within 10..2000");
     const detail::GaitPlan plan = detail::plan_gait(route);
     std::unique_ptr<detail::Trajectory> traj =
-        detail::make_trajectory(options.mount, plan, route, options.heel_strike_g * options.gravity_mps2);
+        detail::make_trajectory(options.mount, plan, options.heel_strike_g * options.gravity_mps2);
 
     SimOutput out;
     out.rate_hz = options.rate_hz;

@@ -11,21 +11,19 @@ namespace {
 
 class FootTrajectory : public Trajectory {
 public:
-    FootTrajectory(const GaitPlan& plan, const FootShape& shape)
-        : steps_(plan.landing_s), kin_(plan, shape) {}
+    FootTrajectory(const GaitPlan& plan, const FootShape& shape) : plan_(plan), kin_(plan, shape) {}
     KinState at(double t_s) override { return kin_.at(t_s); }
     double height_above_floor_m() const override { return 0.0; }
-    std::vector<double> step_times_s() const override { return steps_; }
+    std::vector<double> step_times_s() const override { return plan_.landing_s; }
 
 private:
-    std::vector<double> steps_;
+    const GaitPlan& plan_;
     FootKinematics kin_;
 };
 
 class BodyTrajectory : public Trajectory {
 public:
-    BodyTrajectory(const GaitPlan& plan, const Route& route, const BodyShape& shape)
-        : kin_(plan, route, shape) {}
+    BodyTrajectory(const GaitPlan& plan, const BodyShape& shape) : kin_(plan, shape) {}
     KinState at(double t_s) override { return kin_.at(t_s); }
     double height_above_floor_m() const override { return kin_.shape().height_m; }
     std::vector<double> step_times_s() const override { return kin_.step_times_s(); }
@@ -37,14 +35,14 @@ private:
 }  // namespace
 
 std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan,
-                                            const Route& route, double heel_strike_mps2) {
+                                            double heel_strike_mps2) {
     if (mount == "foot") {
         FootShape shape;
         shape.heel_strike_mps2 = heel_strike_mps2;
         return std::make_unique<FootTrajectory>(plan, shape);
     }
-    if (mount == "chest") return std::make_unique<BodyTrajectory>(plan, route, BodyShape::chest());
-    if (mount == "waist") return std::make_unique<BodyTrajectory>(plan, route, BodyShape::waist());
+    if (mount == "chest") return std::make_unique<BodyTrajectory>(plan, BodyShape::chest());
+    if (mount == "waist") return std::make_unique<BodyTrajectory>(plan, BodyShape::waist());
     throw std::runtime_error("sim: unknown mount '" + mount + "' (foot, chest or waist)");
 }
 

@@ -23,6 +23,6 @@ public:
 
 // "foot", "chest" or "waist"; throws std::runtime_error otherwise.
 std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan,
-                                            const Route& route, double heel_strike_mps2 = 0.0);
+                                            double heel_strike_mps2 = 0.0);
 
 }  // namespace pednav::sim::detail
