@@ -58,25 +58,30 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
     // Split the foot timeline into pauses (long stances) and walking bouts.
     size_t i = 0;
     double yaw_now = plan.prints[0].yaw_enu_rad;
+    // Standing at the footprint of phase k from t0 to the phase's end, facing
+    // the next bout's direction by then.
+    const auto add_pause = [&](size_t k, double t0) {
+        const FootPhase& ph = plan.phases[k];
+        Span s;
+        s.t0 = t0;
+        s.t1 = ph.t1_s;
+        s.p = plan.prints[ph.to].p_enu_m;
+        s.segment = plan.prints[ph.to].segment;
+        s.yaw0 = s.yaw1 = yaw_now;
+        if (k + 1 < plan.phases.size()) {
+            const FootPhase& next = plan.phases[k + 1];
+            const Eigen::Vector3d d = plan.prints[next.to].p_enu_m - plan.prints[next.from].p_enu_m;
+            if (d.head<2>().norm() > 1e-9) s.yaw1 = yaw_now + wrap_pi(std::atan2(d.y(), d.x()) - yaw_now);
+        }
+        yaw_now = s.yaw1;
+        spans_.push_back(std::move(s));
+    };
     while (i < plan.phases.size()) {
         const FootPhase& ph = plan.phases[i];
         const bool pause =
             !ph.swing && (i == 0 || i + 1 == plan.phases.size() || ph.t1_s - ph.t0_s > kPauseS);
         if (pause) {
-            Span s;
-            s.t0 = ph.t0_s;
-            s.t1 = ph.t1_s;
-            s.p = plan.prints[ph.to].p_enu_m;
-            s.segment = plan.prints[ph.to].segment;
-            s.yaw0 = s.yaw1 = yaw_now;
-            // Face the next bout's direction by the end of the pause.
-            if (i + 1 < plan.phases.size()) {
-                const FootPhase& next = plan.phases[i + 1];
-                const Eigen::Vector3d d = plan.prints[next.to].p_enu_m - plan.prints[next.from].p_enu_m;
-                if (d.head<2>().norm() > 1e-9) s.yaw1 = yaw_now + wrap_pi(std::atan2(d.y(), d.x()) - yaw_now);
-            }
-            yaw_now = s.yaw1;
-            spans_.push_back(std::move(s));
+            add_pause(i, ph.t0_s);
             ++i;
             continue;
         }
@@ -136,19 +141,7 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
         i = j;
         // The pause that follows starts at the last landing.
         if (i < plan.phases.size()) {
-            Span p;
-            p.t0 = bout_end_s;
-            p.t1 = plan.phases[i].t1_s;
-            p.p = plan.prints[plan.phases[i].to].p_enu_m;
-            p.segment = plan.prints[plan.phases[i].to].segment;
-            p.yaw0 = p.yaw1 = yaw_now;
-            if (i + 1 < plan.phases.size()) {
-                const FootPhase& next = plan.phases[i + 1];
-                const Eigen::Vector3d d = plan.prints[next.to].p_enu_m - plan.prints[next.from].p_enu_m;
-                if (d.head<2>().norm() > 1e-9) p.yaw1 = yaw_now + wrap_pi(std::atan2(d.y(), d.x()) - yaw_now);
-            }
-            yaw_now = p.yaw1;
-            spans_.push_back(std::move(p));
+            add_pause(i, bout_end_s);
             ++i;
         }
     }
