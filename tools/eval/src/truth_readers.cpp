@@ -10,13 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <pednav_io/geo.hpp>
 
-#include "csv.hpp"
+#include "fields.hpp"
 
 namespace pednav::eval {
 
-using detail::column;
-using detail::split;
-using detail::to_double;
+using detail::number;
+using io::find_column;
 
 namespace {
 
@@ -101,11 +100,13 @@ Truth read_sim_truth(const std::string& path, double period_s) {
     while (std::getline(in, line)) {
         ++n;
         if (line.empty() || line[0] == '#') continue;
-        const std::vector<std::string> f = split(line, ',');
+        const std::vector<std::string_view> f = io::split(line, ',');
         if (header.empty()) {
-            header = f;
-            ct = column(f, "t"), cx = column(f, "x"), cy = column(f, "y"), cz = column(f, "z");
-            cstep = column(f, "step"), cfloor = column(f, "floor"), chead = column(f, "heading_deg");
+            header = detail::to_strings(f);
+            ct = find_column(header, "t"), cx = find_column(header, "x"), cy = find_column(header, "y"),
+            cz = find_column(header, "z");
+            cstep = find_column(header, "step"), cfloor = find_column(header, "floor"),
+            chead = find_column(header, "heading_deg");
             if (ct < 0 || cx < 0 || cy < 0 || cz < 0)
                 throw std::runtime_error(path + ": not a pednav sim truth file");
             continue;
@@ -113,13 +114,13 @@ Truth read_sim_truth(const std::string& path, double period_s) {
         if (f.size() < header.size())
             throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
         TruthPoint p;
-        p.t_s = to_double(f[ct], path, n);
-        p.x_m = to_double(f[cx], path, n);
-        p.y_m = to_double(f[cy], path, n);
-        p.z_m = to_double(f[cz], path, n);
-        if (cfloor >= 0) p.floor = static_cast<int>(to_double(f[cfloor], path, n)), p.has_floor = true;
-        if (chead >= 0) p.heading_deg = to_double(f[chead], path, n);
-        if (cstep >= 0 && to_double(f[cstep], path, n) != 0.0) {
+        p.t_s = number(f[ct], path, n, "t");
+        p.x_m = number(f[cx], path, n, "x");
+        p.y_m = number(f[cy], path, n, "y");
+        p.z_m = number(f[cz], path, n, "z");
+        if (cfloor >= 0) p.floor = static_cast<int>(number(f[cfloor], path, n, "floor")), p.has_floor = true;
+        if (chead >= 0) p.heading_deg = number(f[chead], path, n, "heading_deg");
+        if (cstep >= 0 && number(f[cstep], path, n, "step") != 0.0) {
             t.step_times_s.push_back(p.t_s);
             ++t.step_count;
         }
@@ -171,10 +172,11 @@ Truth read_koroglu_gcp(const std::string& path) {
     while (std::getline(in, line)) {
         ++n;
         if (line.empty() || line[0] == '#') continue;
-        const std::vector<std::string> f = split(line, ',');
+        const std::vector<std::string_view> f = io::split(line, ',');
         if (header.empty()) {
-            header = f;
-            cx = column(f, "gcp_x_m"), cy = column(f, "gcp_y_m"), ct = column(f, "timestamp_s");
+            header = detail::to_strings(f);
+            cx = find_column(header, "gcp_x_m"), cy = find_column(header, "gcp_y_m"),
+            ct = find_column(header, "timestamp_s");
             if (cx < 0 || cy < 0 || ct < 0)
                 throw std::runtime_error(path + ": expected gcp_x_m, gcp_y_m, timestamp_s columns");
             continue;
@@ -182,9 +184,9 @@ Truth read_koroglu_gcp(const std::string& path) {
         if (f.size() < header.size())
             throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
         TruthPoint p;
-        p.t_s = to_double(f[ct], path, n);
-        p.x_m = to_double(f[cx], path, n);
-        p.y_m = to_double(f[cy], path, n);
+        p.t_s = number(f[ct], path, n, "timestamp_s");
+        p.x_m = number(f[cx], path, n, "gcp_x_m");
+        p.y_m = number(f[cy], path, n, "gcp_y_m");
         t.points.push_back(p);
     }
     if (t.points.size() < 2) throw std::runtime_error(path + ": fewer than two footprints");
@@ -270,11 +272,10 @@ Truth read_ipin_posi(const std::string& path) {
     while (std::getline(in, line)) {
         ++n;
         if (line.rfind("POSI;", 0) != 0) continue;
-        const std::vector<std::string> f = split(line, ';');
+        const std::vector<std::string_view> f = io::split(line, ';');
         if (f.size() < 6)
             throw std::runtime_error(path + ":" + std::to_string(n) + ": POSI needs t;counter;lat;lon;floor");
-        const double time = to_double(f[1], path, n), lat = to_double(f[3], path, n),
-                     lon = to_double(f[4], path, n);
+        const double time = number(f[1], path, n), lat = number(f[3], path, n), lon = number(f[4], path, n);
         // Local tangent plane about the first point.
         if (!origin.known) origin = io::Origin{lat, lon, 0.0, true, 0};
         double enu[3];
@@ -283,7 +284,7 @@ Truth read_ipin_posi(const std::string& path) {
         p.t_s = time;
         p.x_m = enu[0];
         p.y_m = enu[1];
-        p.floor = static_cast<int>(to_double(f[5], path, n));
+        p.floor = static_cast<int>(number(f[5], path, n));
         p.has_floor = true;
         t.points.push_back(p);
     }
