@@ -29,14 +29,14 @@ void print_text(const pednav::io::SensorLog& log, bool forced) {
         std::printf("\nnotes:\n");
         for (const auto& n : log.notes) std::printf("  %s\n", n.c_str());
     }
-    std::printf("\nissues: %zu\n",
-                log.issues.size() + log.issues_not_listed - (log.issues_not_listed > 0 ? 1 : 0));
+    std::printf("\nissues: %zu\n", log.issues.size() + log.issues_not_listed);
     for (const auto& i : log.issues) {
         if (i.line > 0)
             std::printf("  line %zu: %s\n", i.line, i.message.c_str());
         else
             std::printf("  %s\n", i.message.c_str());
     }
+    if (log.issues_not_listed > 0) std::printf("  ... %zu more issues not listed\n", log.issues_not_listed);
 }
 
 }  // namespace

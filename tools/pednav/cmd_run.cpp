@@ -95,7 +95,8 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     size_t shown = 0;
     for (const auto& i : log.issues)
         if (shown++ < 20) std::fprintf(stderr, "input: line %zu: %s\n", i.line, i.message.c_str());
-    if (log.issues.size() > 20) std::fprintf(stderr, "input: ... %zu issues in all\n", log.issues.size());
+    const size_t issue_count = log.issues.size() + log.issues_not_listed;
+    if (issue_count > 20) std::fprintf(stderr, "input: ... %zu issues in all\n", issue_count);
 
     const ReplayResult r = cli::run_with_progress(options, io::merged_records(log));
     for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
