@@ -121,7 +121,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     const pn_position_t* last = r.positions.empty() ? nullptr : &r.positions.back();
     std::printf("samples %zu, positions %zu, steps %zu, distance %.2f m, latency %.3f s\n", log.imu.size(),
                 r.positions.size(), r.strides.size() ? r.strides.size() : r.steps.size(),
-                cli::track_length_m(r.positions), static_cast<double>(r.latency_ns) * 1e-9);
+                io::track_length_m(r.positions), static_cast<double>(r.latency_ns) * 1e-9);
     if (last)
         std::printf("final position x %.3f m, y %.3f m, z %.3f m, heading %.1f deg\n", last->pos_enu_m[0],
                     last->pos_enu_m[1], last->pos_enu_m[2], last->heading_rad * 180.0 / M_PI);
