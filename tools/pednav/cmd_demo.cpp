@@ -16,9 +16,19 @@
 #include "cli_common.hpp"
 #include "run_pipeline.hpp"
 
+namespace {
+
+constexpr const char* kUsage =
+    "usage: pednav demo [--out DIR] [--route NAME] [--seed N] [--rate HZ] [--plugin-dir DIR]\n"
+    "  simulates a built-in route (default corridor_loop) with a foot-mounted IMU (default 200 Hz,\n"
+    "  seed 1), runs the foot preset on it from the true start point and heading, prints the error\n"
+    "  and writes DIR/{input.csv,truth.csv,track.csv,steps.csv,demo.svg} (default DIR: out/demo)\n";
+
+}  // namespace
+
 int pednav_cmd_demo(const std::vector<std::string>& argv) {
     using namespace pednav;
-    cli::Args args(argv);
+    cli::Args args(argv, kUsage);
     std::string out_dir = "out/demo", route_name = "corridor_loop";
     sim::SimOptions so;
     so.mount = "foot";

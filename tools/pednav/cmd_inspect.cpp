@@ -11,6 +11,12 @@
 
 namespace {
 
+constexpr const char* kUsage =
+    "usage: pednav inspect FILE [--json] [--format NAME] [--column-map FILE.json] [--gap S]\n"
+    "  what the engine sees in a recording: format, axes, streams and rates, units, gaps, issues\n"
+    "  --format  the input format (default auto: detected); --column-map for any other CSV\n"
+    "  --gap     intervals longer than S seconds are reported as gaps (default 1)\n";
+
 void print_text(const pednav::io::SensorLog& log, bool forced) {
     std::printf("file    %s\n", log.path.c_str());
     std::printf("format  %s (%s)\n", log.format.c_str(), forced ? "as requested" : "detected");
@@ -43,7 +49,7 @@ void print_text(const pednav::io::SensorLog& log, bool forced) {
 
 int pednav_cmd_inspect(const std::vector<std::string>& argv) {
     using namespace pednav;
-    cli::Args args(argv);
+    cli::Args args(argv, kUsage);
     bool json = false;
     std::string path, column_map_path;
     io::ReadOptions options;

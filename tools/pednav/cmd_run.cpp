@@ -15,9 +15,23 @@
 #include "run_plot.hpp"
 #endif
 
+namespace {
+
+constexpr const char* kUsage =
+    "usage: pednav run --mount foot|chest|waist --input FILE [--config FILE] [--format NAME]\n"
+    "                  [--output track.csv] [--steps FILE] [--start x,y,z] [--heading DEG]\n"
+    "                  [--geojson FILE] [--gpx FILE] [--summary FILE] [--plot FILE.svg]\n"
+    "                  [--column-map FILE.json] [--origin lat,lon,height] [--plugin-dir DIR]\n"
+    "  --config  a pednav-config/1 file instead of the mount's preset (configs/<mount>.json)\n"
+    "  --format  the input format (default auto: detected); --column-map for any other CSV\n"
+    "  --start, --heading  the start point (m) and heading (deg clockwise from north), when known\n"
+    "  --origin  WGS-84 of the start point, for --geojson and --gpx\n";
+
+}  // namespace
+
 int pednav_cmd_run(const std::vector<std::string>& argv) {
     using namespace pednav;
-    cli::Args args(argv);
+    cli::Args args(argv, kUsage);
     std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, summary, plot, column_map_path;
     io::Origin origin;
     ReplayOptions options;
