@@ -84,19 +84,42 @@ double json_number(const nlohmann::json& j, const std::string& key, const std::s
 
 }  // namespace
 
-Truth read_sim_truth(const std::string& path, double period_s) {
-    std::ifstream in = open(path);
+Truth sim_truth(const std::vector<TruthPoint>& rows, std::vector<double> step_times_s, double period_s) {
+    if (rows.empty()) throw std::runtime_error("simulated truth: no rows");
     Truth t;
     t.kind = TruthKind::simulated;
-    t.name = path;
+    double next_t = -1e300, dist = 0.0;
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const TruthPoint& p = rows[i];
+        if (i > 0) dist += std::hypot(p.x_m - rows[i - 1].x_m, p.y_m - rows[i - 1].y_m);
+        if (p.t_s >= next_t - 1e-9) {
+            t.points.push_back(p);
+            next_t = p.t_s + period_s;
+        }
+    }
+    const TruthPoint &a = rows.front(), &last = rows.back();
+    if (t.points.back().t_s != last.t_s) t.points.push_back(last);
+    t.step_count = static_cast<int>(step_times_s.size());
+    t.step_times_s = std::move(step_times_s);
+    t.distance_m = dist;
+    t.closed_loop =
+        std::hypot(last.x_m - a.x_m, last.y_m - a.y_m) < 0.05 && std::fabs(last.z_m - a.z_m) < 0.05;
+    if (t.closed_loop) {
+        t.loop_start_s = a.t_s;
+        t.loop_end_s = last.t_s;
+        t.loop_length_m = dist;
+    }
+    return t;
+}
+
+Truth read_sim_truth(const std::string& path, double period_s) {
+    std::ifstream in = open(path);
     std::string line;
     std::vector<std::string> header;
     int ct = -1, cx = -1, cy = -1, cz = -1, cstep = -1, cfloor = -1, chead = -1;
     size_t n = 0;
-    double next_t = -1e300, px = NAN, py = NAN, dist = 0.0;
-    TruthPoint last;
-    bool have_last = false;
-    t.step_count = 0;
+    std::vector<TruthPoint> rows;
+    std::vector<double> step_times_s;
     while (std::getline(in, line)) {
         ++n;
         if (line.empty() || line[0] == '#') continue;
@@ -120,31 +143,12 @@ Truth read_sim_truth(const std::string& path, double period_s) {
         p.z_m = number(f[cz], path, n, "z");
         if (cfloor >= 0) p.floor = static_cast<int>(number(f[cfloor], path, n, "floor")), p.has_floor = true;
         if (chead >= 0) p.heading_deg = number(f[chead], path, n, "heading_deg");
-        if (cstep >= 0 && number(f[cstep], path, n, "step") != 0.0) {
-            t.step_times_s.push_back(p.t_s);
-            ++t.step_count;
-        }
-        if (std::isfinite(px)) dist += std::hypot(p.x_m - px, p.y_m - py);
-        px = p.x_m;
-        py = p.y_m;
-        if (p.t_s >= next_t - 1e-9) {
-            t.points.push_back(p);
-            next_t = p.t_s + period_s;
-        }
-        last = p;
-        have_last = true;
+        if (cstep >= 0 && number(f[cstep], path, n, "step") != 0.0) step_times_s.push_back(p.t_s);
+        rows.push_back(p);
     }
-    if (!have_last) throw std::runtime_error(path + ": no truth rows");
-    if (t.points.back().t_s != last.t_s) t.points.push_back(last);
-    t.distance_m = dist;
-    const TruthPoint& a = t.points.front();
-    t.closed_loop =
-        std::hypot(last.x_m - a.x_m, last.y_m - a.y_m) < 0.05 && std::fabs(last.z_m - a.z_m) < 0.05;
-    if (t.closed_loop) {
-        t.loop_start_s = a.t_s;
-        t.loop_end_s = last.t_s;
-        t.loop_length_m = dist;
-    }
+    if (rows.empty()) throw std::runtime_error(path + ": no truth rows");
+    Truth t = sim_truth(rows, std::move(step_times_s), period_s);
+    t.name = path;
     const std::string route = dir_of(path) + "/route.json";
     if (exists(route)) {
         const nlohmann::json r = read_json(route);
