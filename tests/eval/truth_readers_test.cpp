@@ -128,4 +128,24 @@ TEST_CASE("simulated truth: read back from pednav sim's files, scores a perfect 
     CHECK(m.loop_closure_m < 1e-5);
     CHECK(m.heading_error_deg.max < 1e-3);
     CHECK(m.truth_distance_m == doctest::Approx(out.distance_m).epsilon(0.02));
+    // pednav report builds the same truth from the samples in memory.
+    std::vector<TruthPoint> rows;
+    for (const TruthSample& s : out.truth) {
+        TruthPoint p;
+        p.t_s = s.t_s;
+        p.x_m = s.pos_enu_m[0];
+        p.y_m = s.pos_enu_m[1];
+        p.z_m = s.pos_enu_m[2];
+        p.floor = s.floor;
+        p.has_floor = true;
+        p.heading_deg = s.heading_deg;
+        rows.push_back(p);
+    }
+    const Truth direct = sim_truth(rows, out.step_times_s);
+    REQUIRE(direct.points.size() == t.points.size());
+    CHECK(direct.points.back().t_s == doctest::Approx(out.truth.back().t_s));
+    CHECK(t.points.back().t_s == doctest::Approx(out.truth.back().t_s));
+    CHECK(direct.step_count == t.step_count);
+    CHECK(direct.closed_loop == t.closed_loop);
+    CHECK(direct.loop_length_m == doctest::Approx(t.loop_length_m).epsilon(1e-6));
 }

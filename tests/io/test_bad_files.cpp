@@ -81,6 +81,22 @@ TEST_CASE("canonical CSV: truncated line, text, NaN, backwards time, duplicate, 
     CHECK(log.imu[101].header.t_ns == 11040000000);
 }
 
+TEST_CASE("issues beyond the listing cap are counted, not listed") {
+    const std::string dir = temp_dir();
+    std::ostringstream body;
+    body.precision(10);
+    for (int i = 0; i < 600; ++i)  // every odd row bad: 300 issues
+        body << i * 0.01 << ",0.1,0.2," << (i % 2 ? "nan" : "9.8") << ",0,0,0\n";
+    const std::string path = write_file(dir, "many_bad_rows.csv", kHeader + body.str());
+    ReadOptions options;
+    const SensorLog log = read_sensor_file(path, options);
+    CHECK(log.imu.size() == 300);
+    CHECK(log.issues.size() == options.max_issues);
+    CHECK(log.issues_not_listed == 300 - options.max_issues);
+    for (const auto& issue : log.issues) CHECK(issue.message.find("non-finite value 'nan'") != std::string::npos);
+    CHECK(log.stream("accel")->bad_rows == 300);
+}
+
 TEST_CASE("canonical CSV: optional streams, empty cells, extra columns") {
     const std::string dir = temp_dir();
     const std::string text =

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pednav_io/text_fields.hpp"
 #include "pednav_io/writers.hpp"
 #include "test_util.hpp"
 
@@ -58,17 +59,14 @@ std::vector<pn_stride_t> make_strides() {
     return out;
 }
 
+// Every field of every line, split as the readers split them.
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
     std::ifstream in(path);
     std::vector<std::vector<std::string>> rows;
     std::string line;
     while (std::getline(in, line)) {
-        std::vector<std::string> fields;
-        std::stringstream ss(line);
-        std::string f;
-        while (std::getline(ss, f, ',')) fields.push_back(f);
-        if (!line.empty() && line.back() == ',') fields.emplace_back();
-        rows.push_back(fields);
+        const std::vector<std::string_view> fields = split(line, ',');
+        rows.emplace_back(fields.begin(), fields.end());
     }
     return rows;
 }

@@ -15,21 +15,34 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Walks "--name value" / "--flag" arguments.
+// `pednav <command> --help`: main prints what() (the command's usage) on stdout and exits 0.
+class HelpRequested : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Walks "--name value" / "--flag" arguments. Given the command's usage text,
+// next() answers "--help" and "-h" by throwing HelpRequested with it.
 class Args {
 public:
-    explicit Args(std::vector<std::string> args) : args_(std::move(args)) {}
+    explicit Args(std::vector<std::string> args, std::string usage = {})
+        : args_(std::move(args)), usage_(std::move(usage)) {}
     bool done() const { return i_ >= args_.size(); }
     const std::string& peek() const { return args_[i_]; }
-    std::string next() { return args_[i_++]; }
+    std::string next() {
+        std::string a = args_[i_++];
+        if (!usage_.empty() && (a == "--help" || a == "-h")) throw HelpRequested(usage_);
+        return a;
+    }
     // The value after the option just taken.
     std::string value(const std::string& option) {
         if (done()) throw UsageError(option + " needs a value");
-        return next();
+        return args_[i_++];
     }
 
 private:
     std::vector<std::string> args_;
+    std::string usage_;
     size_t i_ = 0;
 };
 

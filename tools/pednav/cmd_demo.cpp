@@ -16,9 +16,19 @@
 #include "cli_common.hpp"
 #include "run_pipeline.hpp"
 
+namespace {
+
+constexpr const char* kUsage =
+    "usage: pednav demo [--out DIR] [--route NAME] [--seed N] [--rate HZ] [--plugin-dir DIR]\n"
+    "  simulates a built-in route (default corridor_loop) with a foot-mounted IMU (default 200 Hz,\n"
+    "  seed 1), runs the foot preset on it from the true start point and heading, prints the error\n"
+    "  and writes DIR/{input.csv,truth.csv,track.csv,steps.csv,demo.svg} (default DIR: out/demo)\n";
+
+}  // namespace
+
 int pednav_cmd_demo(const std::vector<std::string>& argv) {
     using namespace pednav;
-    cli::Args args(argv);
+    cli::Args args(argv, kUsage);
     std::string out_dir = "out/demo", route_name = "corridor_loop";
     sim::SimOptions so;
     so.mount = "foot";
@@ -30,7 +40,7 @@ int pednav_cmd_demo(const std::vector<std::string>& argv) {
         const std::string a = args.next();
         if (a == "--out") out_dir = args.value(a);
         else if (a == "--route") route_name = args.value(a);
-        else if (a == "--seed") so.seed = static_cast<uint64_t>(cli::parse_numbers(args.value(a), 1, a)[0]);
+        else if (a == "--seed") so.seed = cli::parse_count(args.value(a), a);
         else if (a == "--rate") so.rate_hz = cli::parse_numbers(args.value(a), 1, a)[0];
         else if (a == "--plugin-dir") options.plugin_dirs.push_back(args.value(a));
         else throw cli::UsageError("unknown option " + a + " for demo");
@@ -58,9 +68,10 @@ int pednav_cmd_demo(const std::vector<std::string>& argv) {
     io::write_steps_csv(out_dir + "/steps.csv", r.strides);
 
     const eval::Truth truth = eval::read_sim_truth(out_dir + "/truth.csv");
-    const eval::Track track = eval::track_from_positions(r.positions);
-    eval::Metrics m = eval::evaluate(track, truth);
-    m.step_count = static_cast<int>(r.strides.size());
+    eval::Track track = eval::track_from_positions(r.positions);
+    track.step_times_s = eval::step_times_from_strides(r.strides);
+    track.has_steps = true;
+    const eval::Metrics m = eval::evaluate(track, truth);
     std::printf("%s", eval::format_table(m).c_str());
     plot::write_text_file(out_dir + "/demo.svg",
                           plot::render_walk(plot::walk_plot("pednav demo: " + route_name + ", foot pipeline", track,

@@ -11,6 +11,12 @@
 
 namespace {
 
+constexpr const char* kUsage =
+    "usage: pednav inspect FILE [--json] [--format NAME] [--column-map FILE.json] [--gap S]\n"
+    "  what the engine sees in a recording: format, axes, streams and rates, units, gaps, issues\n"
+    "  --format  the input format (default auto: detected); --column-map for any other CSV\n"
+    "  --gap     intervals longer than S seconds are reported as gaps (default 1)\n";
+
 void print_text(const pednav::io::SensorLog& log, bool forced) {
     std::printf("file    %s\n", log.path.c_str());
     std::printf("format  %s (%s)\n", log.format.c_str(), forced ? "as requested" : "detected");
@@ -29,21 +35,21 @@ void print_text(const pednav::io::SensorLog& log, bool forced) {
         std::printf("\nnotes:\n");
         for (const auto& n : log.notes) std::printf("  %s\n", n.c_str());
     }
-    std::printf("\nissues: %zu\n",
-                log.issues.size() + log.issues_not_listed - (log.issues_not_listed > 0 ? 1 : 0));
+    std::printf("\nissues: %zu\n", log.issues.size() + log.issues_not_listed);
     for (const auto& i : log.issues) {
         if (i.line > 0)
             std::printf("  line %zu: %s\n", i.line, i.message.c_str());
         else
             std::printf("  %s\n", i.message.c_str());
     }
+    if (log.issues_not_listed > 0) std::printf("  ... %zu more issues not listed\n", log.issues_not_listed);
 }
 
 }  // namespace
 
 int pednav_cmd_inspect(const std::vector<std::string>& argv) {
     using namespace pednav;
-    cli::Args args(argv);
+    cli::Args args(argv, kUsage);
     bool json = false;
     std::string path, column_map_path;
     io::ReadOptions options;

@@ -7,9 +7,17 @@
 #include "describe.hpp"
 #include "loader.hpp"
 
+namespace {
+
+constexpr const char* kUsage =
+    "usage: pednav plugins [--json] [--plugin-dir DIR]\n"
+    "  the plugins found (next to the executable and in each --plugin-dir) and the files rejected\n";
+
+}  // namespace
+
 int pednav_cmd_plugins(const std::vector<std::string>& argv) {
     using namespace pednav;
-    cli::Args args(argv);
+    cli::Args args(argv, kUsage);
     bool json = false;
     std::vector<std::string> dirs = {cli::default_plugin_dir()};
     while (!args.done()) {

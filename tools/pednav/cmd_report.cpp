@@ -116,14 +116,9 @@ std::vector<Walk> recording_walks(const std::string& data, Skip skip) {
 }
 
 eval::Truth truth_of(const sim::SimOutput& out, const sim::Route& route) {
-    eval::Truth t;
-    t.kind = eval::TruthKind::simulated;
-    t.name = route.name;
-    const double period_s = 0.1;
-    double next = -1.0;
+    std::vector<eval::TruthPoint> rows;
+    rows.reserve(out.truth.size());
     for (const sim::TruthSample& s : out.truth) {
-        if (s.t_s + 1e-9 < next) continue;
-        next = s.t_s + period_s;
         eval::TruthPoint p;
         p.t_s = s.t_s;
         p.x_m = s.pos_enu_m[0];
@@ -132,14 +127,10 @@ eval::Truth truth_of(const sim::SimOutput& out, const sim::Route& route) {
         p.floor = s.floor;
         p.has_floor = true;
         p.heading_deg = s.heading_deg;
-        t.points.push_back(p);
+        rows.push_back(p);
     }
-    t.step_count = static_cast<int>(out.step_times_s.size());
-    t.step_times_s = out.step_times_s;
-    t.distance_m = out.distance_m;
-    const sim::TruthSample &a = out.truth.front(), &b = out.truth.back();
-    t.closed_loop = std::hypot(a.pos_enu_m[0] - b.pos_enu_m[0], a.pos_enu_m[1] - b.pos_enu_m[1]) < 0.05;
-    t.loop_length_m = out.distance_m;
+    eval::Truth t = eval::sim_truth(rows, out.step_times_s);
+    t.name = route.name;
     for (const sim::Wall& w : route.walls) t.walls.push_back({w.floor, w.points_enu_m});
     return t;
 }

@@ -13,9 +13,23 @@
 #include "run_pipeline.hpp"
 #include "run_plot.hpp"
 
+namespace {
+
+constexpr const char* kUsage =
+    "usage: pednav run --mount foot|chest|waist --input FILE [--config FILE] [--format NAME]\n"
+    "                  [--output track.csv] [--steps FILE] [--start x,y,z] [--heading DEG]\n"
+    "                  [--geojson FILE] [--gpx FILE] [--summary FILE] [--plot FILE.svg]\n"
+    "                  [--column-map FILE.json] [--origin lat,lon,height] [--plugin-dir DIR]\n"
+    "  --config  a pednav-config/1 file instead of the mount's preset (configs/<mount>.json)\n"
+    "  --format  the input format (default auto: detected); --column-map for any other CSV\n"
+    "  --start, --heading  the start point (m) and heading (deg clockwise from north), when known\n"
+    "  --origin  WGS-84 of the start point, for --geojson and --gpx\n";
+
+}  // namespace
+
 int pednav_cmd_run(const std::vector<std::string>& argv) {
     using namespace pednav;
-    cli::Args args(argv);
+    cli::Args args(argv, kUsage);
     std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, summary, plot, column_map_path;
     io::Origin origin;
     ReplayOptions options;
@@ -93,7 +107,8 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     size_t shown = 0;
     for (const auto& i : log.issues)
         if (shown++ < 20) std::fprintf(stderr, "input: line %zu: %s\n", i.line, i.message.c_str());
-    if (log.issues.size() > 20) std::fprintf(stderr, "input: ... %zu issues in all\n", log.issues.size());
+    const size_t issue_count = log.issues.size() + log.issues_not_listed;
+    if (issue_count > 20) std::fprintf(stderr, "input: ... %zu issues in all\n", issue_count);
 
     const ReplayResult r = cli::run_with_progress(options, io::merged_records(log));
     for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -114,7 +129,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     const pn_position_t* last = r.positions.empty() ? nullptr : &r.positions.back();
     std::printf("samples %zu, positions %zu, steps %zu, distance %.2f m, latency %.3f s\n", log.imu.size(),
                 r.positions.size(), r.strides.size() ? r.strides.size() : r.steps.size(),
-                cli::track_length_m(r.positions), static_cast<double>(r.latency_ns) * 1e-9);
+                io::track_length_m(r.positions), static_cast<double>(r.latency_ns) * 1e-9);
     if (last)
         std::printf("final position x %.3f m, y %.3f m, z %.3f m, heading %.1f deg\n", last->pos_enu_m[0],
                     last->pos_enu_m[1], last->pos_enu_m[2], last->heading_rad * 180.0 / M_PI);

@@ -13,17 +13,19 @@
 namespace {
 
 const char* kUsage =
-    "usage: pednav <command> [options]\n"
-    "  demo [--out DIR]                 simulate a foot walk, run the foot pipeline, print its error, plot it\n"
+    "usage: pednav <command> [options]         (pednav <command> --help: that command's usage)\n"
+    "  demo [--out DIR] [--route NAME] [--seed N] [--rate HZ]\n"
+    "                                   simulate a foot walk, run the foot pipeline, print its error, plot it\n"
     "  run --mount foot|chest|waist --input FILE [--config FILE] [--format NAME] [--output track.csv]\n"
     "      [--steps FILE] [--start x,y,z] [--heading DEG] [--geojson FILE] [--gpx FILE]\n"
     "      [--summary FILE] [--plot FILE.svg] [--column-map FILE.json] [--origin lat,lon,height]\n"
     "  plugins [--json]                 plugins loaded and files rejected\n"
-    "  inspect FILE [--json]            what the engine sees in a recording\n"
-    "  sim --route FILE|NAME --mount M --out DIR [--rate HZ] [--seed N]\n"
-    "  eval --track FILE --truth FILE [--kind KIND] [--json]\n"
-    "  report --out DIR                 accuracy of every recording and simulated walk\n"
-    "common options: --plugin-dir DIR (adds a plugin directory)\n";
+    "  inspect FILE [--json] [--format NAME] [--column-map FILE.json] [--gap S]\n"
+    "                                   what the engine sees in a recording\n"
+    "  sim --route FILE|NAME --out DIR [--mount foot|chest|waist] [--rate HZ] [--seed N] ...\n"
+    "  eval --track FILE --truth PATH [--kind KIND] [--align MODE] [--json] ...\n"
+    "  report --out DIR ...             accuracy of every recording and simulated walk\n"
+    "demo, run, plugins and report also take --plugin-dir DIR (adds a plugin directory)\n";
 
 }  // namespace
 
@@ -41,6 +43,9 @@ int main(int argc, char** argv) {
             if (command == sub.name) return sub.run(args);
         std::fprintf(stderr, "pednav: unknown command \"%s\"\n%s", command.c_str(), kUsage);
         return 2;
+    } catch (const pednav::cli::HelpRequested& e) {
+        std::fputs(e.what(), stdout);
+        return 0;
     } catch (const pednav::cli::UsageError& e) {
         std::fprintf(stderr, "pednav %s: %s\n%s", command.c_str(), e.what(), kUsage);
         return 2;

@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <cmath>
 #include <cstdio>
 
 #include "cli_common.hpp"
@@ -34,13 +33,6 @@ void progress_bar(size_t done, size_t total, void*) {
 ReplayResult run_with_progress(ReplayOptions options, const std::vector<const pn_record_header_t*>& records) {
     if (isatty(2) && records.size() > 100000) options.progress = &progress_bar;
     return replay(options, records);
-}
-
-double track_length_m(const std::vector<pn_position_t>& p) {
-    double d = 0;
-    for (size_t i = 1; i < p.size(); ++i)
-        d += std::hypot(p[i].pos_enu_m[0] - p[i - 1].pos_enu_m[0], p[i].pos_enu_m[1] - p[i - 1].pos_enu_m[1]);
-    return d;
 }
 
 }  // namespace pednav::cli

@@ -15,7 +15,4 @@ std::string load_config(const std::string& config_path, const std::string& mount
 // Replays with a progress bar on stderr when it is a terminal.
 ReplayResult run_with_progress(ReplayOptions options, const std::vector<const pn_record_header_t*>& records);
 
-// Horizontal distance along the track, metres.
-double track_length_m(const std::vector<pn_position_t>& positions);
-
 }  // namespace pednav::cli

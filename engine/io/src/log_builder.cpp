@@ -332,9 +332,6 @@ void LogBuilder::finish() {
         }
         log_.streams.push_back(info);
     }
-    if (log_.issues_not_listed > 0) {
-        log_.issues.push_back({0, std::to_string(log_.issues_not_listed) + " more issues not listed"});
-    }
 }
 
 }  // namespace pednav::io::detail

@@ -45,6 +45,15 @@ nlohmann::json sensor_log_json(const SensorLog& log) {
             {"notes", log.notes}};
 }
 
+double track_length_m(const std::vector<pn_position_t>& positions) {
+    double length_m = 0.0;
+    for (size_t i = 1; i < positions.size(); ++i) {
+        length_m += std::hypot(positions[i].pos_enu_m[0] - positions[i - 1].pos_enu_m[0],
+                               positions[i].pos_enu_m[1] - positions[i - 1].pos_enu_m[1]);
+    }
+    return length_m;
+}
+
 nlohmann::json run_summary_json(const SensorLog& input, const std::string& describe_json,
                                 const std::vector<pn_position_t>& positions,
                                 const std::vector<pn_stride_t>& strides,
@@ -55,11 +64,6 @@ nlohmann::json run_summary_json(const SensorLog& input, const std::string& descr
 
     double stride_distance_m = 0.0;
     for (const auto& s : strides) stride_distance_m += s.length_m;
-    double track_length_m = 0.0;
-    for (size_t i = 1; i < positions.size(); ++i) {
-        track_length_m += std::hypot(positions[i].pos_enu_m[0] - positions[i - 1].pos_enu_m[0],
-                                     positions[i].pos_enu_m[1] - positions[i - 1].pos_enu_m[1]);
-    }
     std::set<int> floors;
     for (const auto& p : positions) {
         if (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) floors.insert(p.floor);
@@ -83,7 +87,7 @@ nlohmann::json run_summary_json(const SensorLog& input, const std::string& descr
           {"gnss", input.gnss.size()}}},
         {"positions", positions.size()},
         {"steps", strides.size()},
-        {"distance_m", track_length_m},
+        {"distance_m", track_length_m(positions)},
         {"stride_length_sum_m", stride_distance_m},
         {"duration_s", duration_s},
         {"final_position_enu_m", final_position},

@@ -45,9 +45,6 @@ struct TableSpec {
 
 void read_table(const TextFile& file, const TableSpec& spec, LogBuilder& builder);
 
-// Column index of `name` in `names` (exact match), or -1.
-int find_column(const std::vector<std::string>& names, const std::string& name);
-
 // Rotation matrices for the common remaps.
 void set_identity(double R[9]);
 void set_signed_permutation(double R[9], const int src[3], const double sign[3]);

@@ -4,13 +4,12 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "csv.hpp"
+#include "fields.hpp"
 
 namespace pednav::eval {
 
-using detail::column;
-using detail::split;
-using detail::to_double;
+using detail::number;
+using io::find_column;
 
 TrackSample Track::at(double t_s) const {
     if (samples.empty()) throw std::runtime_error("track: empty");
@@ -51,12 +50,12 @@ Track read_track_csv(const std::string& path) {
     while (std::getline(in, line)) {
         ++n;
         if (line.empty() || line[0] == '#') continue;
-        const std::vector<std::string> f = split(line, ',');
+        const std::vector<std::string_view> f = io::split(line, ',');
         if (header.empty()) {
-            header = f;
-            ct = column(header, "t"), cx = column(header, "x"), cy = column(header, "y"),
-            cz = column(header, "z");
-            ch = column(header, "heading_deg"), cf = column(header, "floor");
+            header = detail::to_strings(f);
+            ct = find_column(header, "t"), cx = find_column(header, "x"), cy = find_column(header, "y"),
+            cz = find_column(header, "z");
+            ch = find_column(header, "heading_deg"), cf = find_column(header, "floor");
             if (ct < 0 || cx < 0 || cy < 0)
                 throw std::runtime_error(path + ":" + std::to_string(n) +
                                          ": a track needs the columns t, x, y");
@@ -66,13 +65,13 @@ Track read_track_csv(const std::string& path) {
             throw std::runtime_error(path + ":" + std::to_string(n) + ": expected " +
                                      std::to_string(header.size()) + " columns");
         TrackSample s;
-        s.t_s = to_double(f[ct], path, n);
-        s.pos_m[0] = to_double(f[cx], path, n);
-        s.pos_m[1] = to_double(f[cy], path, n);
-        s.pos_m[2] = cz >= 0 ? to_double(f[cz], path, n) : 0.0;
-        if (ch >= 0 && !f[ch].empty()) s.heading_deg = to_double(f[ch], path, n);
+        s.t_s = number(f[ct], path, n, "t");
+        s.pos_m[0] = number(f[cx], path, n, "x");
+        s.pos_m[1] = number(f[cy], path, n, "y");
+        s.pos_m[2] = cz >= 0 ? number(f[cz], path, n, "z") : 0.0;
+        if (ch >= 0 && !f[ch].empty()) s.heading_deg = number(f[ch], path, n, "heading_deg");
         if (cf >= 0 && !f[cf].empty()) {
-            s.floor = static_cast<int>(to_double(f[cf], path, n));
+            s.floor = static_cast<int>(number(f[cf], path, n, "floor"));
             s.has_floor = true;
         }
         if (!track.samples.empty() && s.t_s < track.samples.back().t_s)
@@ -94,22 +93,22 @@ std::vector<double> read_step_times_csv(const std::string& path) {
     while (std::getline(in, line)) {
         ++n;
         if (line.empty() || line[0] == '#') continue;
-        const std::vector<std::string> f = split(line, ',');
+        const std::vector<std::string_view> f = io::split(line, ',');
         if (first) {
             first = false;
-            char* end = nullptr;
-            std::strtod(f[0].c_str(), &end);
-            if (f[0].empty() || *end != '\0') {  // a header line
-                if (column(f, "t_end") >= 0)
-                    col = column(f, "t_end");
-                else if (column(f, "t") >= 0)
-                    col = column(f, "t");
+            double unused = 0.0;
+            if (io::parse_number(f[0], &unused) != io::NumberStatus::ok) {  // a header line
+                const std::vector<std::string> header = detail::to_strings(f);
+                if (find_column(header, "t_end") >= 0)
+                    col = find_column(header, "t_end");
+                else if (find_column(header, "t") >= 0)
+                    col = find_column(header, "t");
                 continue;
             }
         }
         if (static_cast<size_t>(col) >= f.size())
             throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
-        t.push_back(to_double(f[col], path, n));
+        t.push_back(number(f[col], path, n));
     }
     return t;
 }

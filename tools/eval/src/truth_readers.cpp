@@ -10,13 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <pednav_io/geo.hpp>
 
-#include "csv.hpp"
+#include "fields.hpp"
 
 namespace pednav::eval {
 
-using detail::column;
-using detail::split;
-using detail::to_double;
+using detail::number;
+using io::find_column;
 
 namespace {
 
@@ -85,58 +84,24 @@ double json_number(const nlohmann::json& j, const std::string& key, const std::s
 
 }  // namespace
 
-Truth read_sim_truth(const std::string& path, double period_s) {
-    std::ifstream in = open(path);
+Truth sim_truth(const std::vector<TruthPoint>& rows, std::vector<double> step_times_s, double period_s) {
+    if (rows.empty()) throw std::runtime_error("simulated truth: no rows");
     Truth t;
     t.kind = TruthKind::simulated;
-    t.name = path;
-    std::string line;
-    std::vector<std::string> header;
-    int ct = -1, cx = -1, cy = -1, cz = -1, cstep = -1, cfloor = -1, chead = -1;
-    size_t n = 0;
-    double next_t = -1e300, px = NAN, py = NAN, dist = 0.0;
-    TruthPoint last;
-    bool have_last = false;
-    t.step_count = 0;
-    while (std::getline(in, line)) {
-        ++n;
-        if (line.empty() || line[0] == '#') continue;
-        const std::vector<std::string> f = split(line, ',');
-        if (header.empty()) {
-            header = f;
-            ct = column(f, "t"), cx = column(f, "x"), cy = column(f, "y"), cz = column(f, "z");
-            cstep = column(f, "step"), cfloor = column(f, "floor"), chead = column(f, "heading_deg");
-            if (ct < 0 || cx < 0 || cy < 0 || cz < 0)
-                throw std::runtime_error(path + ": not a pednav sim truth file");
-            continue;
-        }
-        if (f.size() < header.size())
-            throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
-        TruthPoint p;
-        p.t_s = to_double(f[ct], path, n);
-        p.x_m = to_double(f[cx], path, n);
-        p.y_m = to_double(f[cy], path, n);
-        p.z_m = to_double(f[cz], path, n);
-        if (cfloor >= 0) p.floor = static_cast<int>(to_double(f[cfloor], path, n)), p.has_floor = true;
-        if (chead >= 0) p.heading_deg = to_double(f[chead], path, n);
-        if (cstep >= 0 && to_double(f[cstep], path, n) != 0.0) {
-            t.step_times_s.push_back(p.t_s);
-            ++t.step_count;
-        }
-        if (std::isfinite(px)) dist += std::hypot(p.x_m - px, p.y_m - py);
-        px = p.x_m;
-        py = p.y_m;
+    double next_t = -1e300, dist = 0.0;
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const TruthPoint& p = rows[i];
+        if (i > 0) dist += std::hypot(p.x_m - rows[i - 1].x_m, p.y_m - rows[i - 1].y_m);
         if (p.t_s >= next_t - 1e-9) {
             t.points.push_back(p);
             next_t = p.t_s + period_s;
         }
-        last = p;
-        have_last = true;
     }
-    if (!have_last) throw std::runtime_error(path + ": no truth rows");
+    const TruthPoint &a = rows.front(), &last = rows.back();
     if (t.points.back().t_s != last.t_s) t.points.push_back(last);
+    t.step_count = static_cast<int>(step_times_s.size());
+    t.step_times_s = std::move(step_times_s);
     t.distance_m = dist;
-    const TruthPoint& a = t.points.front();
     t.closed_loop =
         std::hypot(last.x_m - a.x_m, last.y_m - a.y_m) < 0.05 && std::fabs(last.z_m - a.z_m) < 0.05;
     if (t.closed_loop) {
@@ -144,6 +109,46 @@ Truth read_sim_truth(const std::string& path, double period_s) {
         t.loop_end_s = last.t_s;
         t.loop_length_m = dist;
     }
+    return t;
+}
+
+Truth read_sim_truth(const std::string& path, double period_s) {
+    std::ifstream in = open(path);
+    std::string line;
+    std::vector<std::string> header;
+    int ct = -1, cx = -1, cy = -1, cz = -1, cstep = -1, cfloor = -1, chead = -1;
+    size_t n = 0;
+    std::vector<TruthPoint> rows;
+    std::vector<double> step_times_s;
+    while (std::getline(in, line)) {
+        ++n;
+        if (line.empty() || line[0] == '#') continue;
+        const std::vector<std::string_view> f = io::split(line, ',');
+        if (header.empty()) {
+            header = detail::to_strings(f);
+            ct = find_column(header, "t"), cx = find_column(header, "x"), cy = find_column(header, "y"),
+            cz = find_column(header, "z");
+            cstep = find_column(header, "step"), cfloor = find_column(header, "floor"),
+            chead = find_column(header, "heading_deg");
+            if (ct < 0 || cx < 0 || cy < 0 || cz < 0)
+                throw std::runtime_error(path + ": not a pednav sim truth file");
+            continue;
+        }
+        if (f.size() < header.size())
+            throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
+        TruthPoint p;
+        p.t_s = number(f[ct], path, n, "t");
+        p.x_m = number(f[cx], path, n, "x");
+        p.y_m = number(f[cy], path, n, "y");
+        p.z_m = number(f[cz], path, n, "z");
+        if (cfloor >= 0) p.floor = static_cast<int>(number(f[cfloor], path, n, "floor")), p.has_floor = true;
+        if (chead >= 0) p.heading_deg = number(f[chead], path, n, "heading_deg");
+        if (cstep >= 0 && number(f[cstep], path, n, "step") != 0.0) step_times_s.push_back(p.t_s);
+        rows.push_back(p);
+    }
+    if (rows.empty()) throw std::runtime_error(path + ": no truth rows");
+    Truth t = sim_truth(rows, std::move(step_times_s), period_s);
+    t.name = path;
     const std::string route = dir_of(path) + "/route.json";
     if (exists(route)) {
         const nlohmann::json r = read_json(route);
@@ -171,10 +176,11 @@ Truth read_koroglu_gcp(const std::string& path) {
     while (std::getline(in, line)) {
         ++n;
         if (line.empty() || line[0] == '#') continue;
-        const std::vector<std::string> f = split(line, ',');
+        const std::vector<std::string_view> f = io::split(line, ',');
         if (header.empty()) {
-            header = f;
-            cx = column(f, "gcp_x_m"), cy = column(f, "gcp_y_m"), ct = column(f, "timestamp_s");
+            header = detail::to_strings(f);
+            cx = find_column(header, "gcp_x_m"), cy = find_column(header, "gcp_y_m"),
+            ct = find_column(header, "timestamp_s");
             if (cx < 0 || cy < 0 || ct < 0)
                 throw std::runtime_error(path + ": expected gcp_x_m, gcp_y_m, timestamp_s columns");
             continue;
@@ -182,9 +188,9 @@ Truth read_koroglu_gcp(const std::string& path) {
         if (f.size() < header.size())
             throw std::runtime_error(path + ":" + std::to_string(n) + ": short row");
         TruthPoint p;
-        p.t_s = to_double(f[ct], path, n);
-        p.x_m = to_double(f[cx], path, n);
-        p.y_m = to_double(f[cy], path, n);
+        p.t_s = number(f[ct], path, n, "timestamp_s");
+        p.x_m = number(f[cx], path, n, "gcp_x_m");
+        p.y_m = number(f[cy], path, n, "gcp_y_m");
         t.points.push_back(p);
     }
     if (t.points.size() < 2) throw std::runtime_error(path + ": fewer than two footprints");
@@ -270,11 +276,10 @@ Truth read_ipin_posi(const std::string& path) {
     while (std::getline(in, line)) {
         ++n;
         if (line.rfind("POSI;", 0) != 0) continue;
-        const std::vector<std::string> f = split(line, ';');
+        const std::vector<std::string_view> f = io::split(line, ';');
         if (f.size() < 6)
             throw std::runtime_error(path + ":" + std::to_string(n) + ": POSI needs t;counter;lat;lon;floor");
-        const double time = to_double(f[1], path, n), lat = to_double(f[3], path, n),
-                     lon = to_double(f[4], path, n);
+        const double time = number(f[1], path, n), lat = number(f[3], path, n), lon = number(f[4], path, n);
         // Local tangent plane about the first point.
         if (!origin.known) origin = io::Origin{lat, lon, 0.0, true, 0};
         double enu[3];
@@ -283,7 +288,7 @@ Truth read_ipin_posi(const std::string& path) {
         p.t_s = time;
         p.x_m = enu[0];
         p.y_m = enu[1];
-        p.floor = static_cast<int>(to_double(f[5], path, n));
+        p.floor = static_cast<int>(number(f[5], path, n));
         p.has_floor = true;
         t.points.push_back(p);
     }

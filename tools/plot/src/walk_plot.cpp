@@ -67,15 +67,21 @@ void draw_series(Svg& svg, const Series& s, const std::vector<Point>& px) {
         for (const Point& p : px) svg.circle(p, 2.5, s.color);
 }
 
-void draw_map(Svg& svg, const MapPanel& panel, double ox, double oy, double w, double h) {
-    const double ml = 55.0, mr = 15.0, mt = panel.title.empty() ? 12.0 : 30.0, mb = 40.0;
-    const double pw = w - ml - mr, ph = h - mt - mb;
-    if (!panel.title.empty()) svg.text({ox + w / 2.0, oy + 20.0}, panel.title, 14.0, "middle");
+// Bounding box of the walls and every series of a map panel.
+Box data_box(const MapPanel& panel) {
     Box b;
     for (const auto& wall : panel.walls)
         for (const Point& p : wall) b.add(p);
     for (const Series& s : panel.series)
         for (const Point& p : s.points) b.add(p);
+    return b;
+}
+
+void draw_map(Svg& svg, const MapPanel& panel, double ox, double oy, double w, double h) {
+    const double ml = 55.0, mr = 15.0, mt = panel.title.empty() ? 12.0 : 30.0, mb = 40.0;
+    const double pw = w - ml - mr, ph = h - mt - mb;
+    if (!panel.title.empty()) svg.text({ox + w / 2.0, oy + 20.0}, panel.title, 14.0, "middle");
+    Box b = data_box(panel);
     if (!b.valid()) b = {0.0, 1.0, 0.0, 1.0};
     const double pad = 0.04 * std::max({b.x1 - b.x0, b.y1 - b.y0, 1.0});
     b.x0 -= pad, b.x1 += pad, b.y0 -= pad, b.y1 += pad;
@@ -178,20 +184,10 @@ std::string render_map(const MapPanel& panel, double width_px, double height_px)
     return svg.str();
 }
 
-std::string render_time(const TimePanel& panel, double width_px, double height_px) {
-    Svg svg(width_px, height_px);
-    draw_time(svg, panel, 0.0, 0.0, width_px, height_px);
-    return svg.str();
-}
-
 std::string render_walk(const WalkPlot& plot) {
     const double w = plot.width_px;
     // Map height from the data's aspect ratio, within limits.
-    Box b;
-    for (const auto& wall : plot.map.walls)
-        for (const Point& p : wall) b.add(p);
-    for (const Series& s : plot.map.series)
-        for (const Point& p : s.points) b.add(p);
+    const Box b = data_box(plot.map);
     double map_h = 0.66 * w;
     if (b.valid() && b.x1 > b.x0)
         map_h = std::clamp((w - 70.0) * (b.y1 - b.y0) / (b.x1 - b.x0) + 80.0, 0.35 * w, 1.1 * w);

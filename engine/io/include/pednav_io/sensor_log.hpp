@@ -61,7 +61,7 @@ struct SensorLog {
     std::vector<std::string> notes;  // what was detected: format, rate, units, columns, axes
     Origin truth_origin;             // origin of the truth points when they came as lat/lon
     std::string axes;                // the body axes of the records, e.g. "sensor x,y,z (NGIMU case)"
-    size_t issues_not_listed = 0;    // issues counted but not kept in `issues` (cap per file)
+    size_t issues_not_listed = 0;    // issues beyond ReadOptions::max_issues: counted, not kept in `issues`
 
     const StreamInfo* stream(const std::string& name) const;
 };

@@ -32,6 +32,10 @@ void write_geojson(const std::string& path, const std::vector<pn_position_t>& po
 // at lat/lon 0/0 (documented; the file says so in <desc>).
 void write_gpx(const std::string& path, const std::vector<pn_position_t>& positions, const Origin& origin);
 
+// Horizontal length of the track in metres: the sum of the east-north steps
+// between consecutive positions (the summary's "distance_m").
+double track_length_m(const std::vector<pn_position_t>& positions);
+
 // The JSON run summary (keys in docs/formats.md): the input as detected, the
 // pipeline from `describe_json` (pn_engine_describe), counts, distance, duration,
 // warnings.

@@ -59,7 +59,6 @@ struct EvalOptions {
     Alignment alignment = Alignment::none;
     size_t fit_points = 5;         // fitted: checkpoints used (after the start), 0 = all
     double first_segment_m = 3.0;  // first_segment: the first checkpoint at least this far from the start
-    double sim_checkpoint_period_s = 0.1;  // (informational) spacing of simulated-truth checkpoints
 };
 
 // The transform applied to the track: p' = R(rotation) (p - from) + to.

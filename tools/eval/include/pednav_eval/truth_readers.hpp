@@ -4,14 +4,22 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <pednav_eval/truth.hpp>
 
 namespace pednav::eval {
 
-// pednav sim truth.csv: checkpoints every `period_s` (position, height, floor,
-// walking heading), the step events, a closed loop when the walk ends where it
-// started, and the walls of route.json when it sits next to truth.csv.
+// The truth of a simulated walk from every sample of it (`rows`, in time order:
+// position, height, floor, walking heading) and its step event times:
+// checkpoints every `period_s` from the first row, and the last row; the
+// distance along the rows; a closed loop when the last row is within 5 cm of
+// the first, horizontally and in height. No walls. Throws std::runtime_error
+// when `rows` is empty.
+Truth sim_truth(const std::vector<TruthPoint>& rows, std::vector<double> step_times_s, double period_s = 0.1);
+
+// pednav sim truth.csv through sim_truth (a step event on each row with step
+// 1), with the walls of route.json when it sits next to truth.csv.
 Truth read_sim_truth(const std::string& truth_csv, double period_s = 0.1);
 
 // koroglu-foot-gcp *_gcp.csv: one footprint per stride at the end of its

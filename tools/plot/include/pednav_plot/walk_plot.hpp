@@ -38,9 +38,9 @@ struct WalkPlot {
     double width_px = 900.0;
 };
 
-// The map panel alone, the time panel alone, or both stacked.
+// The map panel alone, or the whole figure: title, map and (when it has
+// series) the time panel below it.
 std::string render_map(const MapPanel& panel, double width_px = 900.0, double height_px = 600.0);
-std::string render_time(const TimePanel& panel, double width_px = 900.0, double height_px = 300.0);
 std::string render_walk(const WalkPlot& plot);
 
 // "Nice" tick positions covering [lo, hi] (1, 2, 5 x 10^k steps), about `target` of them.
