@@ -156,22 +156,20 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
     }
     const bool in_order = r->t_ns >= last_any_t_ns_ && r->t_ns > last_t_ns_[r->type];
     if (in_order && record_values_ok(r)) return PN_OK;
-    const std::string bad = check_record_values(r);
+    const ValueProblem bad = find_value_problem(r);
     char at[64];
     std::snprintf(at, sizeof at, " at t=%.6f s", static_cast<double>(r->t_ns) * 1e-9);
-    if (!bad.empty()) {
-        set_error(err, PN_E_NUMERIC, "input", std::string(record_type_name(r->type)) + " sample" + at + ": " + bad);
+    if (bad) {
+        set_error(err, PN_E_NUMERIC, "input",
+                  std::string(record_type_name(r->type)) + " sample" + at + ": " + describe(bad));
         return PN_E_NUMERIC;
     }
-    {
-        const int64_t prev = std::max(last_any_t_ns_, last_t_ns_[r->type]);
-        char msg[160];
-        std::snprintf(msg, sizeof msg, "%s sample%s is not after the previous sample at t=%.6f s",
-                      record_type_name(r->type), at, static_cast<double>(prev) * 1e-9);
-        set_error(err, PN_E_OUT_OF_ORDER, "input", msg);
-        return PN_E_OUT_OF_ORDER;
-    }
-    return PN_OK;
+    const int64_t prev = std::max(last_any_t_ns_, last_t_ns_[r->type]);
+    char msg[160];
+    std::snprintf(msg, sizeof msg, "%s sample%s is not after the previous sample at t=%.6f s",
+                  record_type_name(r->type), at, static_cast<double>(prev) * 1e-9);
+    set_error(err, PN_E_OUT_OF_ORDER, "input", msg);
+    return PN_E_OUT_OF_ORDER;
 }
 
 pn_status_t Engine::stage_failure_status(pn_error_t* err) {
