@@ -143,7 +143,7 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
         set_error(err, PN_E_INVALID_ARGUMENT, "input", "record pointer is NULL");
         return PN_E_INVALID_ARGUMENT;
     }
-    if (!(kInputTypes & PN_REC_MASK(r->type)) || r->type >= PN_REC_TYPE_COUNT) {
+    if (r->type >= PN_REC_TYPE_COUNT || !(kInputTypes & PN_REC_MASK(r->type))) {  // range first: no shift past 63
         set_error(err, PN_E_INVALID_ARGUMENT, "input",
                   "record type " + std::to_string(r->type) + " is not an input type (imu, mag, baro, gnss)");
         return PN_E_INVALID_ARGUMENT;

@@ -301,6 +301,15 @@ TEST_CASE("push refuses records that are not inputs or are malformed") {
     p.header.type = PN_REC_POSITION;
     p.header.t_ns = kT0Ns;
     CHECK(pn_engine_push(e.get(), &p.header, &err) == PN_E_INVALID_ARGUMENT);
+    // Unknown ids, including ones past the 64 mask bits (65 would alias IMU's bit).
+    for (uint32_t type : {0u, 11u, 63u, 64u, 65u, 200u}) {
+        CAPTURE(type);
+        pn_imu_t odd = imu_sample(0);
+        odd.header.type = type;
+        err = make_error();
+        CHECK(pn_engine_push(e.get(), &odd.header, &err) == PN_E_INVALID_ARGUMENT);
+        CHECK_MESSAGE(contains(err.message, "not an input type"), err.message);
+    }
     pn_imu_t s = imu_sample(0);
     s.header.struct_size = sizeof(pn_record_header_t);  // truncated
     CHECK(pn_engine_push(e.get(), &s.header, &err) == PN_E_INVALID_ARGUMENT);
