@@ -107,6 +107,22 @@ TEST_CASE("push_imu honours a stride larger than sizeof(pn_imu_t)") {
     Engine d(steps_config(), {fixture_dir("good")});
     CHECK(pn_engine_push_imu(d.get(), plain.data(), plain.size(), sizeof(pn_imu_t) - 8, nullptr) ==
           PN_E_INVALID_ARGUMENT);
+    CHECK(pn_engine_push_imu(d.get(), plain.data(), plain.size(), 8, nullptr) == PN_E_INVALID_ARGUMENT);
+    CHECK(d.describe()["counters"]["records_in"] == 0);
+}
+
+TEST_CASE("push_imu refuses a later sample whose struct_size exceeds the stride") {
+    // The engine copies struct_size bytes of each sample: a sample claiming
+    // more than the stride would make it read past the app's array.
+    auto samples = walk(0, 30);
+    samples[12].header.struct_size = sizeof(pn_imu_t) + 64;
+    Engine e(steps_config(), {fixture_dir("good")});
+    pn_error_t err = make_error();
+    CHECK(push(e, samples, &err) == PN_E_INVALID_ARGUMENT);
+    CHECK(err.detail == 12);
+    CHECK_MESSAGE(contains(err.message, "sample 12"), err.message);
+    CHECK_MESSAGE(contains(err.message, "stride_bytes"), err.message);
+    CHECK(e.describe()["counters"]["records_in"] == 12);  // the samples before it went in
 }
 
 TEST_CASE("a NaN input sample is rejected with err.detail = its index; the samples before it are kept") {
