@@ -172,10 +172,8 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
     return PN_E_OUT_OF_ORDER;
 }
 
-pn_status_t Engine::stage_failure_status(pn_error_t* err) {
-    if (!scheduler_->has_failure()) return PN_OK;
+pn_status_t Engine::report_stage_failure(pn_error_t* err) {
     StageFailure f = scheduler_->take_failure();
-    if (f.status == PN_OK) return PN_OK;
     log(PNP_LOG_ERROR, f.where.c_str(), f.message.c_str());
     set_error(err, f.status, f.where, f.message);
     return f.status;
