@@ -1,6 +1,7 @@
 // pn_engine.h implemented over engine::Engine. No exception leaves this file.
 #include <cstring>
 #include <new>
+#include <string>
 
 #include <pednav/pn_engine.h>
 
@@ -84,8 +85,12 @@ pn_status_t pn_engine_push_imu(pn_engine_t* engine, const pn_imu_t* samples, siz
         set_error(err, PN_E_INVALID_ARGUMENT, "push_imu", "engine or samples is NULL");
         return PN_E_INVALID_ARGUMENT;
     }
-    if (count && stride_bytes < samples->header.struct_size) {
-        set_error(err, PN_E_INVALID_ARGUMENT, "push_imu", "stride_bytes is smaller than the samples' struct_size");
+    // No IMU record is shorter than its 1.0 size, so neither can the stride be
+    // (and every sample's header then lies inside the app's array).
+    if (count && stride_bytes < PN_IMU_MIN_SIZE) {
+        set_error(err, PN_E_INVALID_ARGUMENT, "push_imu",
+                  "stride_bytes " + std::to_string(stride_bytes) + " is smaller than an IMU record (" +
+                      std::to_string(PN_IMU_MIN_SIZE) + " bytes)");
         return PN_E_INVALID_ARGUMENT;
     }
     const unsigned char* p = reinterpret_cast<const unsigned char*>(samples);
@@ -93,6 +98,14 @@ pn_status_t pn_engine_push_imu(pn_engine_t* engine, const pn_imu_t* samples, siz
         const auto* h = reinterpret_cast<const pn_record_header_t*>(p + i * stride_bytes);
         if (h->type != PN_REC_IMU) {
             set_error(err, PN_E_INVALID_ARGUMENT, "push_imu", "sample is not an IMU record", static_cast<int32_t>(i));
+            return PN_E_INVALID_ARGUMENT;
+        }
+        // The engine copies struct_size bytes: never more than the sample's slot in the array.
+        if (h->struct_size > stride_bytes) {
+            set_error(err, PN_E_INVALID_ARGUMENT, "push_imu",
+                      "sample " + std::to_string(i) + " has struct_size " + std::to_string(h->struct_size) +
+                          ", larger than stride_bytes " + std::to_string(stride_bytes),
+                      static_cast<int32_t>(i));
             return PN_E_INVALID_ARGUMENT;
         }
         try {

@@ -46,7 +46,7 @@ StageConfig parse_stage(const nlohmann::json& j, Role role, const std::string& w
 
 }  // namespace
 
-EngineConfig parse_config(const std::string& text, const std::string& mount_override) {
+EngineConfig parse_config(const std::string& text) {
     nlohmann::json doc;
     try {
         doc = nlohmann::json::parse(text);
@@ -64,13 +64,9 @@ EngineConfig parse_config(const std::string& text, const std::string& mount_over
         fail("/format", "\"format\" must be \"pednav-config/1\"");
 
     EngineConfig cfg;
-    if (!mount_override.empty()) {
-        cfg.mount = mount_override;
-    } else {
-        auto m = doc.find("mount");
-        if (m == doc.end() || !m->is_string()) fail("/mount", "\"mount\" must be \"foot\", \"chest\" or \"waist\"");
-        cfg.mount = m->get<std::string>();
-    }
+    auto m = doc.find("mount");
+    if (m == doc.end() || !m->is_string()) fail("/mount", "\"mount\" must be \"foot\", \"chest\" or \"waist\"");
+    cfg.mount = m->get<std::string>();
     if (cfg.mount != "foot" && cfg.mount != "chest" && cfg.mount != "waist")
         fail("/mount", "mount \"" + cfg.mount + "\" is not one of foot, chest, waist");
     if (auto r = doc.find("imu_rate_hz"); r != doc.end()) {

@@ -35,8 +35,7 @@ struct ConfigProblem {
     std::string message;
 };
 
-// Parses the document; `mount_override` (non-empty) replaces its "mount".
-// Throws ConfigProblem.
-EngineConfig parse_config(const std::string& text, const std::string& mount_override = "");
+// Parses the document. Throws ConfigProblem.
+EngineConfig parse_config(const std::string& text);
 
 }  // namespace pednav::engine

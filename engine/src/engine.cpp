@@ -143,7 +143,7 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
         set_error(err, PN_E_INVALID_ARGUMENT, "input", "record pointer is NULL");
         return PN_E_INVALID_ARGUMENT;
     }
-    if (!(kInputTypes & PN_REC_MASK(r->type)) || r->type >= PN_REC_TYPE_COUNT) {
+    if (r->type >= PN_REC_TYPE_COUNT || !(kInputTypes & PN_REC_MASK(r->type))) {  // range first: no shift past 63
         set_error(err, PN_E_INVALID_ARGUMENT, "input",
                   "record type " + std::to_string(r->type) + " is not an input type (imu, mag, baro, gnss)");
         return PN_E_INVALID_ARGUMENT;
@@ -156,28 +156,24 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
     }
     const bool in_order = r->t_ns >= last_any_t_ns_ && r->t_ns > last_t_ns_[r->type];
     if (in_order && record_values_ok(r)) return PN_OK;
-    const std::string bad = check_record_values(r);
+    const ValueProblem bad = find_value_problem(r);
     char at[64];
     std::snprintf(at, sizeof at, " at t=%.6f s", static_cast<double>(r->t_ns) * 1e-9);
-    if (!bad.empty()) {
-        set_error(err, PN_E_NUMERIC, "input", std::string(record_type_name(r->type)) + " sample" + at + ": " + bad);
+    if (bad) {
+        set_error(err, PN_E_NUMERIC, "input",
+                  std::string(record_type_name(r->type)) + " sample" + at + ": " + describe(bad));
         return PN_E_NUMERIC;
     }
-    {
-        const int64_t prev = std::max(last_any_t_ns_, last_t_ns_[r->type]);
-        char msg[160];
-        std::snprintf(msg, sizeof msg, "%s sample%s is not after the previous sample at t=%.6f s",
-                      record_type_name(r->type), at, static_cast<double>(prev) * 1e-9);
-        set_error(err, PN_E_OUT_OF_ORDER, "input", msg);
-        return PN_E_OUT_OF_ORDER;
-    }
-    return PN_OK;
+    const int64_t prev = std::max(last_any_t_ns_, last_t_ns_[r->type]);
+    char msg[160];
+    std::snprintf(msg, sizeof msg, "%s sample%s is not after the previous sample at t=%.6f s",
+                  record_type_name(r->type), at, static_cast<double>(prev) * 1e-9);
+    set_error(err, PN_E_OUT_OF_ORDER, "input", msg);
+    return PN_E_OUT_OF_ORDER;
 }
 
-pn_status_t Engine::stage_failure_status(pn_error_t* err) {
-    if (!scheduler_->has_failure()) return PN_OK;
+pn_status_t Engine::report_stage_failure(pn_error_t* err) {
     StageFailure f = scheduler_->take_failure();
-    if (f.status == PN_OK) return PN_OK;
     log(PNP_LOG_ERROR, f.where.c_str(), f.message.c_str());
     set_error(err, f.status, f.where, f.message);
     return f.status;

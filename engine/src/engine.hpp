@@ -33,7 +33,11 @@ public:
 
 private:
     pn_status_t check_input(const pn_record_header_t* record, pn_error_t* err);
-    pn_status_t stage_failure_status(pn_error_t* err);
+    // PN_OK, or the stage failure of the last push or flush, logged and in *err.
+    pn_status_t stage_failure_status(pn_error_t* err) {
+        return scheduler_->has_failure() ? report_stage_failure(err) : PN_OK;
+    }
+    pn_status_t report_stage_failure(pn_error_t* err);  // out of line: not on the per-sample path
 
     std::unique_ptr<Loader> loader_;
     EngineConfig config_;
@@ -43,7 +47,6 @@ private:
     int64_t last_t_ns_[PN_REC_TYPE_COUNT];
     int64_t last_any_t_ns_ = INT64_MIN;
     uint64_t rejected_inputs_ = 0;
-    std::vector<std::string> input_warnings_;
 };
 
 // Fills a caller's pn_error_t (if any).

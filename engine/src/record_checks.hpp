@@ -15,11 +15,27 @@ const char* record_type_name(pn_record_type_t type);  // "imu", "position", ... 
 constexpr uint64_t kInputTypes = PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_MAG) |
                                  PN_REC_MASK(PN_REC_BARO) | PN_REC_MASK(PN_REC_GNSS);
 
-// Empty when fine, else the problem ("accel_mps2[2] is NaN"). Checks that the
-// values a consumer relies on are finite and in physical range (covariance
-// diagonals non-negative, quaternions of unit norm).
-std::string check_record_values(const pn_record_header_t* record);
-// The same verdict without building a message: the per-sample path.
+// A quaternion is of unit norm when | |q| - 1 | <= this.
+constexpr double kUnitQuaternionTolerance = 1e-3;
+
+// The first value of a record a consumer could not rely on: not finite, or out
+// of physical range (covariance diagonals non-negative, quaternions of unit
+// norm, pressure positive, latitude and longitude in range). Nothing in it is
+// allocated; the text is made by describe() only for a refused record.
+struct ValueProblem {
+    const char* field = nullptr;    // nullptr: every value is fine
+    int index = -1;                 // element of an array field, -1 for a scalar
+    double value = 0;               // the offending value (the norm, for a quaternion)
+    const char* problem = nullptr;  // what is wrong when it is finite, e.g. "(negative variance)"
+
+    explicit operator bool() const { return field != nullptr; }
+};
+
+ValueProblem find_value_problem(const pn_record_header_t* record);
+// The same verdict, !find_value_problem(record), from the same checks with
+// nothing to fill in: the per-sample path.
 bool record_values_ok(const pn_record_header_t* record);
+// "accel_mps2[2] is nan", "cov_enu_m2[4] is -1 (negative variance)"; empty when fine.
+std::string describe(const ValueProblem& problem);
 
 }  // namespace pednav::engine

@@ -38,7 +38,6 @@ public:
     void release_until(Seq seq) {
         if (seq > begin_) begin_ = seq < end_ ? seq : end_;
     }
-    void clear() { begin_ = end_; }
     size_t capacity() const { return slots_.size(); }
 
 private:

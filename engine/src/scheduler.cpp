@@ -110,9 +110,8 @@ pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
         return PN_E_INVALID_ARGUMENT;
     }
     if (!record_values_ok(r)) {
-        const std::string bad = check_record_values(r);
         s.sink_problem = std::string("emitted a ") + record_type_name(r->type) + " record at " + seconds(r->t_ns) +
-                         " whose " + bad;
+                         " whose " + describe(find_value_problem(r));
         warn(s.instance_name + " misbehaving: " + s.sink_problem);
         return PN_E_NUMERIC;
     }

@@ -79,8 +79,9 @@ struct StageFailure {
 
 class Scheduler {
 public:
-    // Takes the created stages in role order; `output_mask` selects the types
-    // copied to the output queue (from the last stage producing each type).
+    // Takes the created stages in role order (at most one per role) and the
+    // output queue's capacity (0 = the default). set_output_mask selects the
+    // types copied to the output queue, from the last stage producing each type.
     Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity);
     ~Scheduler();  // destroys the instances
 
@@ -125,7 +126,7 @@ private:
     std::vector<std::unique_ptr<Stage>> stages_;
     std::vector<RecordQueue> queues_;      // 0 = app, k+1 = stage k
     std::vector<uint64_t> queue_wanted_;   // union of reader masks per queue
-    uint64_t final_producer_mask_[8] = {}; // per stage: types it is the last producer of
+    uint64_t final_producer_mask_[kRoleCount] = {};  // per stage: types it is the last producer of
     OutputQueue outputs_;
     uint64_t output_mask_;
     int64_t app_limit_ns_ = INT64_MIN;     // app records up to here are released

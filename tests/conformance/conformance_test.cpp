@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <memory>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,9 +20,13 @@
 #include <pednav/pn_engine.h>
 #include <pednav_sim/simulate.hpp>
 
+#include "test_support.hpp"
+
 namespace {
 
 using nlohmann::json;
+using pednav::test::Engine;
+using pednav::test::make_error;
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path);
@@ -31,40 +35,11 @@ std::string read_file(const std::string& path) {
     return s.str();
 }
 
-struct EngineDeleter {
-    void operator()(pn_engine_t* e) const { pn_engine_destroy(e); }
+// An engine on the first-party plugins.
+struct FirstParty : Engine {
+    explicit FirstParty(const std::string& config)
+        : Engine(config, {PEDNAV_PLUGIN_OUTPUT_DIR}, 4096 /* polled after every push */) {}
 };
-using EnginePtr = std::unique_ptr<pn_engine_t, EngineDeleter>;
-
-pn_error_t make_error() {
-    pn_error_t e;
-    std::memset(&e, 0, sizeof e);
-    e.struct_size = sizeof e;
-    return e;
-}
-
-EnginePtr create(const std::string& config, pn_error_t* err) {
-    const char* dirs[] = {PEDNAV_PLUGIN_OUTPUT_DIR};
-    pn_engine_create_info_t info{};
-    info.abi_version = PN_ABI_VERSION;
-    info.struct_size = sizeof info;
-    info.config_json = config.c_str();
-    info.plugin_dirs = dirs;
-    info.plugin_dir_count = 1;
-    info.output_queue_capacity = 4096;  // polled after every push
-    pn_engine_t* e = nullptr;
-    pn_engine_create(&info, &e, err);
-    return EnginePtr(e);
-}
-
-json describe(const pn_engine_t* e) {
-    size_t size = 0;
-    pn_engine_describe(e, nullptr, 0, &size);
-    std::string text(size, '\0');
-    pn_engine_describe(e, text.data(), size, &size);
-    text.resize(size - 1);
-    return json::parse(text);
-}
 
 // Every output of a run, as raw bytes for bit-exact comparison.
 std::vector<std::string> run(pn_engine_t* e, const std::vector<const pn_record_header_t*>& records) {
@@ -138,13 +113,13 @@ std::string role_of_kind(const std::string& kind) { return kind; }  // kinds and
 
 TEST_CASE("every first-party plugin passes the conformance suite in each mount it declares") {
     // Discover the plugins through an engine on the foot preset.
-    pn_error_t err = make_error();
     const std::string foot_preset = read_file(std::string(PEDNAV_CONFIG_DIR) + "/foot.json");
     REQUIRE(!foot_preset.empty());
-    auto probe = create(foot_preset, &err);
-    INFO(err.where << ": " << err.message);
-    REQUIRE(probe);
-    const json d = describe(probe.get());
+    const FirstParty probe(foot_preset);
+    INFO(probe.error().where << ": " << probe.error().message);
+    REQUIRE(probe.status() == PN_OK);
+    const json d = probe.describe();
+    REQUIRE(d.is_object());
     CHECK(d["rejected"].empty());
     std::vector<Candidate> candidates;
     for (const auto& p : d["plugins"]) {
@@ -160,6 +135,7 @@ TEST_CASE("every first-party plugin passes the conformance suite in each mount i
     }
     REQUIRE(candidates.size() >= 4);
 
+    std::map<std::string, pednav::sim::SimOutput> walks;  // one simulated walk per mount, shared by its candidates
     size_t tested = 0;
     for (const auto& c : candidates) {
         const std::string preset_text = read_file(std::string(PEDNAV_CONFIG_DIR) + "/" + c.mount + ".json");
@@ -171,42 +147,44 @@ TEST_CASE("every first-party plugin passes the conformance suite in each mount i
         if (!stage.is_object() || stage["plugin"] != c.id) stage = {{"plugin", c.id}, {"params", json::object()}};
         preset["mount"] = c.mount;
 
-        pednav::sim::SimOptions so;
-        so.mount = c.mount;
-        so.rate_hz = 200;
-        so.seed = 11;
-        const auto walk = pednav::sim::simulate(pednav::sim::builtin_route("corridor_loop"), so);
-        const auto records = walk.records();
+        auto walk = walks.find(c.mount);
+        if (walk == walks.end()) {
+            pednav::sim::SimOptions so;
+            so.mount = c.mount;
+            so.rate_hz = 200;
+            so.seed = 11;
+            walk = walks.emplace(c.mount, pednav::sim::simulate(pednav::sim::builtin_route("corridor_loop"), so)).first;
+        }
+        const auto records = walk->second.records();
 
-        err = make_error();
-        auto a = create(preset.dump(), &err);
-        INFO(err.where << ": " << err.message);
-        REQUIRE(a);
+        const FirstParty a(preset.dump());
+        INFO(a.error().where << ": " << a.error().message);
+        REQUIRE(a.status() == PN_OK);
         const auto first = run(a.get(), records);
         check_outputs(first);
 
         // Reset gives the state right after create: the same outputs again.
+        pn_error_t err = make_error();
         REQUIRE(pn_engine_reset(a.get(), &err) == PN_OK);
         CHECK(run(a.get(), records) == first);
 
         // A second engine on the same input: bit-identical.
-        auto b = create(preset.dump(), &err);
-        REQUIRE(b);
+        const FirstParty b(preset.dump());
+        REQUIRE(b.status() == PN_OK);
         CHECK(run(b.get(), records) == first);
 
         // Defaults alone are a valid configuration.
         json defaults = preset;
         defaults["pipelines"][c.mount][role_of_kind(c.kind)]["params"] = json::object();
-        err = make_error();
-        CHECK(create(defaults.dump(), &err) != nullptr);
+        CHECK(FirstParty(defaults.dump()).status() == PN_OK);
 
         // An unknown parameter is rejected with its key named.
         json typo = preset;
         typo["pipelines"][c.mount][role_of_kind(c.kind)]["params"]["no_such_parameter"] = 1;
-        err = make_error();
-        CHECK(create(typo.dump(), &err) == nullptr);
-        CHECK(err.code == PN_E_INVALID_CONFIG);
-        CHECK(std::string(err.where) ==
+        const FirstParty t(typo.dump());
+        CHECK(t.get() == nullptr);
+        CHECK(t.error().code == PN_E_INVALID_CONFIG);
+        CHECK(std::string(t.error().where) ==
               "/pipelines/" + c.mount + "/" + role_of_kind(c.kind) + "/params/no_such_parameter");
         ++tested;
     }

@@ -107,6 +107,22 @@ TEST_CASE("push_imu honours a stride larger than sizeof(pn_imu_t)") {
     Engine d(steps_config(), {fixture_dir("good")});
     CHECK(pn_engine_push_imu(d.get(), plain.data(), plain.size(), sizeof(pn_imu_t) - 8, nullptr) ==
           PN_E_INVALID_ARGUMENT);
+    CHECK(pn_engine_push_imu(d.get(), plain.data(), plain.size(), 8, nullptr) == PN_E_INVALID_ARGUMENT);
+    CHECK(d.describe()["counters"]["records_in"] == 0);
+}
+
+TEST_CASE("push_imu refuses a later sample whose struct_size exceeds the stride") {
+    // The engine copies struct_size bytes of each sample: a sample claiming
+    // more than the stride would make it read past the app's array.
+    auto samples = walk(0, 30);
+    samples[12].header.struct_size = sizeof(pn_imu_t) + 64;
+    Engine e(steps_config(), {fixture_dir("good")});
+    pn_error_t err = make_error();
+    CHECK(push(e, samples, &err) == PN_E_INVALID_ARGUMENT);
+    CHECK(err.detail == 12);
+    CHECK_MESSAGE(contains(err.message, "sample 12"), err.message);
+    CHECK_MESSAGE(contains(err.message, "stride_bytes"), err.message);
+    CHECK(e.describe()["counters"]["records_in"] == 12);  // the samples before it went in
 }
 
 TEST_CASE("a NaN input sample is rejected with err.detail = its index; the samples before it are kept") {
@@ -301,6 +317,15 @@ TEST_CASE("push refuses records that are not inputs or are malformed") {
     p.header.type = PN_REC_POSITION;
     p.header.t_ns = kT0Ns;
     CHECK(pn_engine_push(e.get(), &p.header, &err) == PN_E_INVALID_ARGUMENT);
+    // Unknown ids, including ones past the 64 mask bits (65 would alias IMU's bit).
+    for (uint32_t type : {0u, 11u, 63u, 64u, 65u, 200u}) {
+        CAPTURE(type);
+        pn_imu_t odd = imu_sample(0);
+        odd.header.type = type;
+        err = make_error();
+        CHECK(pn_engine_push(e.get(), &odd.header, &err) == PN_E_INVALID_ARGUMENT);
+        CHECK_MESSAGE(contains(err.message, "not an input type"), err.message);
+    }
     pn_imu_t s = imu_sample(0);
     s.header.struct_size = sizeof(pn_record_header_t);  // truncated
     CHECK(pn_engine_push(e.get(), &s.header, &err) == PN_E_INVALID_ARGUMENT);

@@ -12,10 +12,12 @@
 
 namespace pednav::test {
 
+#ifdef PEDNAV_TEST_PLUGIN_DIR
 // <build>/test-plugins/<name>: one fixture library per directory.
 inline std::string fixture_dir(const std::string& name) {
     return std::string(PEDNAV_TEST_PLUGIN_DIR) + "/" + name;
 }
+#endif
 
 inline pn_error_t make_error() {
     pn_error_t e;

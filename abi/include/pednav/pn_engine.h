@@ -81,7 +81,9 @@ PN_API pn_status_t pn_engine_create(const pn_engine_create_info_t *info, pn_engi
 PN_API void pn_engine_destroy(pn_engine_t *engine);
 
 /* Push `count` IMU samples laid out `stride_bytes` apart (>= header.struct_size
- * of the first; lets apps built against another minor index correctly).
+ * of every sample; lets apps built against another minor index correctly: a
+ * sample claiming more is refused with PN_E_INVALID_ARGUMENT, err.detail = its
+ * index).
  * Samples are processed before the call returns, except those at the newest
  * time, which wait for a later sample or flush (see docs/scheduler.md). A
  * sample with a non-finite value or time not after the previous sample is

@@ -1,0 +1,103 @@
+// White-box tests of the engine's record value checks (record_checks.hpp):
+// the verdict and the reason come from one checker, so a refused record
+// always says why.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "record_checks.hpp"
+
+using namespace pednav::engine;
+
+namespace {
+
+template <typename T>
+T record(pn_record_type_t type) {
+    T r;
+    std::memset(&r, 0, sizeof r);
+    r.header.struct_size = sizeof r;
+    r.header.type = type;
+    return r;
+}
+
+pn_attitude_t attitude_of_norm(double norm) {
+    auto a = record<pn_attitude_t>(PN_REC_ATTITUDE);
+    a.q_enu_from_body[0] = norm * 0.6;
+    a.q_enu_from_body[3] = norm * 0.8;
+    return a;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("a quaternion is refused exactly when its norm is off by more than the tolerance, with a reason") {
+    static_assert(kUnitQuaternionTolerance == 1e-3);
+    for (double off : {0.0, 0.5e-3, 0.97e-3, -0.97e-3}) {
+        CAPTURE(off);
+        const auto a = attitude_of_norm(1 + off);
+        CHECK(record_values_ok(&a.header));
+        CHECK(describe(find_value_problem(&a.header)).empty());
+    }
+    for (double off : {1.03e-3, -1.03e-3, 0.1, -1.0}) {
+        CAPTURE(off);
+        const auto a = attitude_of_norm(1 + off);
+        CHECK(!record_values_ok(&a.header));
+        const ValueProblem p = find_value_problem(&a.header);
+        REQUIRE(p);
+        CHECK(std::string(p.field) == "q_enu_from_body");
+        CHECK(p.value == doctest::Approx(1 + off));
+        const std::string why = describe(p);
+        CHECK_MESSAGE(contains(why, "q_enu_from_body"), why);
+        CHECK_MESSAGE(contains(why, "not a unit quaternion"), why);
+    }
+}
+
+TEST_CASE("every refused record names the field, the element and the value") {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    SUBCASE("imu") {
+        auto r = record<pn_imu_t>(PN_REC_IMU);
+        CHECK(record_values_ok(&r.header));
+        r.gyro_radps[2] = nan;
+        CHECK(!record_values_ok(&r.header));
+        CHECK(describe(find_value_problem(&r.header)) == "gyro_radps[2] is nan");
+    }
+    SUBCASE("baro") {
+        auto r = record<pn_baro_t>(PN_REC_BARO);
+        r.pressure_pa = -3;
+        CHECK(!record_values_ok(&r.header));
+        CHECK(describe(find_value_problem(&r.header)) == "pressure_pa is -3 (not positive)");
+    }
+    SUBCASE("gnss") {
+        auto r = record<pn_gnss_t>(PN_REC_GNSS);
+        CHECK(record_values_ok(&r.header));
+        r.lat_deg = 91;
+        CHECK(!record_values_ok(&r.header));
+        CHECK(contains(describe(find_value_problem(&r.header)), "lat_deg is 91"));
+        r.lat_deg = 0;
+        r.h_accuracy_m = std::numeric_limits<double>::infinity();
+        CHECK(!record_values_ok(&r.header));
+        CHECK(describe(find_value_problem(&r.header)) == "h_accuracy_m is inf");
+    }
+    SUBCASE("step") {
+        auto r = record<pn_step_t>(PN_REC_STEP);
+        CHECK(record_values_ok(&r.header));
+        r.frequency_hz = nan;
+        CHECK(!record_values_ok(&r.header));
+        CHECK(describe(find_value_problem(&r.header)) == "frequency_hz is nan");
+    }
+    SUBCASE("position covariance") {
+        auto r = record<pn_position_t>(PN_REC_POSITION);
+        CHECK(record_values_ok(&r.header));
+        r.vel_enu_mps[0] = nan;  // ignored without the velocity flag
+        CHECK(record_values_ok(&r.header));
+        r.cov_enu_m2[8] = -1;
+        CHECK(!record_values_ok(&r.header));
+        CHECK(describe(find_value_problem(&r.header)) == "cov_enu_m2[8] is -1 (negative variance)");
+        r.header.flags = PN_POSITION_FLAG_HAS_VELOCITY;
+        CHECK(describe(find_value_problem(&r.header)) == "vel_enu_mps[0] is nan");
+    }
+}
