@@ -41,6 +41,16 @@ std::string foot_config(const nlohmann::json& patch, double imu_rate_hz) {
     return doc.dump();
 }
 
+std::string koroglu_config(const nlohmann::json& patch) {
+    // The 3DM-GX5-25 of these walks is set to +-500 deg/s and clips in brisk
+    // swings: tell the attitude estimator the sensor's range, unless the patch
+    // sets one itself (0 = the repair off, to measure without it).
+    nlohmann::json p = patch;
+    const nlohmann::json::json_pointer range("/pipelines/foot/attitude_estimator/params/gyro_range_radps");
+    if (!p.contains(range)) p[range] = kKorogluGyroRangeRadps;
+    return foot_config(p, 0.0);
+}
+
 nlohmann::json detector_patch(const std::string& which) {
     nlohmann::json p = nlohmann::json::object();
     if (which == "multicondition") {
@@ -180,12 +190,7 @@ KorogluScore score_koroglu(int n, const std::string& config_json) {
     sc.footprints = gx.size() - 1;
     for (size_t i = 1; i < gx.size(); ++i) sc.path_m += std::hypot(gx[i] - gx[i - 1], gy[i] - gy[i - 1]);
 
-    // The 3DM-GX5-25 of these walks is set to +-500 deg/s and clips in brisk
-    // swings: tell the attitude estimator the sensor's range.
-    auto doc = nlohmann::json::parse(config_json);
-    auto& att = doc["pipelines"]["foot"]["attitude_estimator"]["params"];
-    if (!(att.value("gyro_range_radps", 0.0) > 0)) att["gyro_range_radps"] = kKorogluGyroRangeRadps;
-    const ReplayResult r = run_file(base + ".csv", doc.dump());
+    const ReplayResult r = run_file(base + ".csv", config_json);
     sc.strides = r.strides.size();
     // Estimated footprint: the position at the end of each annotated stance,
     // relative to the one of stride 0.

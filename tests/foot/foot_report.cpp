@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
             for (bool zaru : {false, true}) {
                 nlohmann::json p2 = patch;
                 p2.merge_patch(ekf_patch({{"zaru", zaru}}));
-                const std::string c2 = foot_config(p2, 0.0);
+                const std::string c2 = koroglu_config(p2);
                 std::printf("%s\n", zaru ? "ZUPT + ZARU" : "ZUPT only");
                 for (int n : {33, 35, 39, 42, 44}) {
                     const KorogluScore s = score_koroglu(n, c2);
@@ -100,8 +100,9 @@ int main(int argc, char** argv) {
             std::printf("xio %-11s strides %3zu  walked %6.2f m  closure %.3f m (h %.3f)  %.2f %%\n", w, s.strides,
                         s.distance_m, s.closure_m, s.closure_h_m, s.closure_pct);
         }
+        const std::string koroglu_cfg = koroglu_config(patch);
         for (int n : {33, 35, 39, 42, 44}) {
-            const KorogluScore s = score_koroglu(n, cfg);
+            const KorogluScore s = score_koroglu(n, koroglu_cfg);
             std::printf("koroglu %d strides %3zu/%3zu  path %6.1f m  mean %.3f max %.3f final %.3f m  mean %.2f %%\n", n,
                         s.strides, s.footprints, s.path_m, s.err_m.mean, s.err_m.max, s.err_m.final, s.mean_pct);
         }
