@@ -56,6 +56,8 @@ nlohmann::json detector_patch(const std::string& which) {
     if (which == "multicondition") {
         p["pipelines"]["foot"]["step_detector"] = {{"plugin", "org.pednav.foot.stance.multicondition"},
                                                    {"params", nlohmann::json::object()}};
+    } else if (which != "shoe") {
+        throw std::runtime_error("unknown detector '" + which + "' (shoe or multicondition)");
     }
     return p;
 }

@@ -17,7 +17,7 @@ std::string foot_config(const nlohmann::json& patch, double imu_rate_hz);
 // range is given to the attitude estimator unless the patch sets
 // gyro_range_radps itself (0 = the clipping repair off).
 std::string koroglu_config(const nlohmann::json& patch);
-// The patch that selects a stance detector ("shoe" or "multicondition").
+// The patch that selects a stance detector ("shoe" or "multicondition"; throws on any other name).
 nlohmann::json detector_patch(const std::string& which);
 // Merge patch for the position filter's params.
 nlohmann::json ekf_patch(const nlohmann::json& params);
