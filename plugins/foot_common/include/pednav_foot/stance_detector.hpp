@@ -61,7 +61,7 @@ struct MultiConditionConfig : StanceWindows {
 // SHOE / GLRT detector (Skog, Handel, Nilsson, Rantakokko 2010, eq. (10)):
 // T = 1/W sum_j ( |a_j - g u|^2 / sigma_a^2 + |w_j|^2 / sigma_w^2 ), with
 // u the mean specific force direction over the window; stance when T < gamma.
-// With gravity_mps2 = 0 the window's own mean |a| replaces g, which makes the
+// With gravity_mps2 = 0 the window's own |mean a| replaces g, which makes the
 // test blind to accelerometer scale errors (a sensor reading 0.97 g at rest).
 //
 // Adaptive threshold (adaptive_window_s > 0): a gait cycle holds one stance,
@@ -73,7 +73,7 @@ struct ShoeConfig : StanceWindows {
     double accel_sd_mps2 = 1.0;      // sigma_a
     double gyro_sd_radps = 0.5;      // sigma_w
     double threshold = 0.5;          // gamma (dimensionless, W-normalised)
-    double gravity_mps2 = 0.0;       // g; 0 = the window's mean |a|
+    double gravity_mps2 = 0.0;       // g; 0 = the window's |mean a|
     // W = 0.06 s, majority filter 0.05 s, adaptive threshold over 1 s.
     ShoeConfig() : StanceWindows{0.06, 0.05, 1.0, 3.0, 60.0} {}
 };
