@@ -30,14 +30,13 @@ std::string data_dir() { return PEDNAV_SHARED_DATA_DIR; }
 
 const double kKorogluGyroRangeRadps = 500.0 * M_PI / 180.0;
 
-std::string foot_config(const nlohmann::json& patch, double imu_rate_hz) {
+std::string foot_config(const nlohmann::json& patch) {
     nlohmann::json doc = load_json(std::string(PEDNAV_SOURCE_DIR) + "/configs/foot.json");
     // Another detector plugin starts from its own defaults, not the preset's params.
     const nlohmann::json::json_pointer det("/pipelines/foot/step_detector");
     if (patch.contains(det / "plugin") && patch[det / "plugin"] != doc[det / "plugin"])
         doc[det / "params"] = nlohmann::json::object();
     doc.merge_patch(patch);
-    doc["imu_rate_hz"] = imu_rate_hz;
     return doc.dump();
 }
 
@@ -48,7 +47,7 @@ std::string koroglu_config(const nlohmann::json& patch) {
     nlohmann::json p = patch;
     const nlohmann::json::json_pointer range("/pipelines/foot/attitude_estimator/params/gyro_range_radps");
     if (!p.contains(range)) p[range] = kKorogluGyroRangeRadps;
-    return foot_config(p, 0.0);
+    return foot_config(p);
 }
 
 nlohmann::json detector_patch(const std::string& which) {

@@ -10,9 +10,9 @@
 
 namespace pednav::foot_eval {
 
-// configs/foot.json with `patch` merged in (RFC 7386 merge patch), and the
-// nominal IMU rate set.
-std::string foot_config(const nlohmann::json& patch, double imu_rate_hz);
+// configs/foot.json with `patch` merged in (RFC 7386 merge patch); the replay
+// helpers below set imu_rate_hz to the recording's or simulation's rate.
+std::string foot_config(const nlohmann::json& patch);
 // foot_config() for the koroglu-foot-gcp walks: their sensor's +-500 deg/s gyro
 // range is given to the attitude estimator unless the patch sets
 // gyro_range_radps itself (0 = the clipping repair off).

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
     try {
         nlohmann::json patch = detector_patch(det);
         if (argc > 2) patch.merge_patch(nlohmann::json::parse(argv[2]));
-        const std::string cfg = foot_config(patch, 0.0);
+        const std::string cfg = foot_config(patch);
         if (mode == "tables") {
             // The paper's tables: |dx|, |dy| at the footprints, ZUPT only vs ZUPT + ZARU.
             for (bool zaru : {false, true}) {
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
             // preset (HUPT with the level memory), 200 Hz, four seeds.
             nlohmann::json p0 = patch;
             p0.merge_patch(ekf_patch({{"hupt", false}}));
-            const std::string zupt_cfg = foot_config(p0, 0.0);
+            const std::string zupt_cfg = foot_config(p0);
             for (const char* route : {"stairs", "building_tour"}) {
                 for (double errors : {1.0, 5.0}) {
                     for (uint64_t seed = 1; seed <= 4; ++seed) {

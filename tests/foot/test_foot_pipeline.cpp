@@ -17,10 +17,10 @@ using namespace pednav::foot_eval;
 
 namespace {
 const std::string& preset() {
-    static const std::string cfg = foot_config(nlohmann::json::object(), 0.0);
+    static const std::string cfg = foot_config(nlohmann::json::object());
     return cfg;
 }
-std::string with_ekf(const nlohmann::json& params) { return foot_config(ekf_patch(params), 0.0); }
+std::string with_ekf(const nlohmann::json& params) { return foot_config(ekf_patch(params)); }
 }  // namespace
 
 TEST_CASE("issue 3: xio-gait-ngimu loops end near their start (causal)") {
@@ -238,7 +238,7 @@ TEST_CASE("foot plugins reject unknown or bad params, naming the key") {
     const std::string path = data_dir() + "/xio-gait-ngimu/short_walk.csv";
     auto expect_error = [&](const nlohmann::json& patch, const std::string& key) {
         try {
-            run_file(path, foot_config(patch, 0.0));
+            run_file(path, foot_config(patch));
             FAIL("accepted a bad config");
         } catch (const std::exception& e) {
             CHECK(std::string(e.what()).find(key) != std::string::npos);
