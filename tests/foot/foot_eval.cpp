@@ -30,15 +30,24 @@ std::string data_dir() { return PEDNAV_SHARED_DATA_DIR; }
 
 const double kKorogluGyroRangeRadps = 500.0 * M_PI / 180.0;
 
-std::string foot_config(const nlohmann::json& patch, double imu_rate_hz) {
+std::string foot_config(const nlohmann::json& patch) {
     nlohmann::json doc = load_json(std::string(PEDNAV_SOURCE_DIR) + "/configs/foot.json");
     // Another detector plugin starts from its own defaults, not the preset's params.
     const nlohmann::json::json_pointer det("/pipelines/foot/step_detector");
     if (patch.contains(det / "plugin") && patch[det / "plugin"] != doc[det / "plugin"])
         doc[det / "params"] = nlohmann::json::object();
     doc.merge_patch(patch);
-    doc["imu_rate_hz"] = imu_rate_hz;
     return doc.dump();
+}
+
+std::string koroglu_config(const nlohmann::json& patch) {
+    // The 3DM-GX5-25 of these walks is set to +-500 deg/s and clips in brisk
+    // swings: tell the attitude estimator the sensor's range, unless the patch
+    // sets one itself (0 = the repair off, to measure without it).
+    nlohmann::json p = patch;
+    const nlohmann::json::json_pointer range("/pipelines/foot/attitude_estimator/params/gyro_range_radps");
+    if (!p.contains(range)) p[range] = kKorogluGyroRangeRadps;
+    return foot_config(p);
 }
 
 nlohmann::json detector_patch(const std::string& which) {
@@ -46,6 +55,8 @@ nlohmann::json detector_patch(const std::string& which) {
     if (which == "multicondition") {
         p["pipelines"]["foot"]["step_detector"] = {{"plugin", "org.pednav.foot.stance.multicondition"},
                                                    {"params", nlohmann::json::object()}};
+    } else if (which != "shoe") {
+        throw std::runtime_error("unknown detector '" + which + "' (shoe or multicondition)");
     }
     return p;
 }
@@ -180,12 +191,7 @@ KorogluScore score_koroglu(int n, const std::string& config_json) {
     sc.footprints = gx.size() - 1;
     for (size_t i = 1; i < gx.size(); ++i) sc.path_m += std::hypot(gx[i] - gx[i - 1], gy[i] - gy[i - 1]);
 
-    // The 3DM-GX5-25 of these walks is set to +-500 deg/s and clips in brisk
-    // swings: tell the attitude estimator the sensor's range.
-    auto doc = nlohmann::json::parse(config_json);
-    auto& att = doc["pipelines"]["foot"]["attitude_estimator"]["params"];
-    if (!(att.value("gyro_range_radps", 0.0) > 0)) att["gyro_range_radps"] = kKorogluGyroRangeRadps;
-    const ReplayResult r = run_file(base + ".csv", doc.dump());
+    const ReplayResult r = run_file(base + ".csv", config_json);
     sc.strides = r.strides.size();
     // Estimated footprint: the position at the end of each annotated stance,
     // relative to the one of stride 0.

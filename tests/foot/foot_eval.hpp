@@ -10,10 +10,14 @@
 
 namespace pednav::foot_eval {
 
-// configs/foot.json with `patch` merged in (RFC 7386 merge patch), and the
-// nominal IMU rate set.
-std::string foot_config(const nlohmann::json& patch, double imu_rate_hz);
-// The patch that selects a stance detector ("shoe" or "multicondition").
+// configs/foot.json with `patch` merged in (RFC 7386 merge patch); the replay
+// helpers below set imu_rate_hz to the recording's or simulation's rate.
+std::string foot_config(const nlohmann::json& patch);
+// foot_config() for the koroglu-foot-gcp walks: their sensor's +-500 deg/s gyro
+// range is given to the attitude estimator unless the patch sets
+// gyro_range_radps itself (0 = the clipping repair off).
+std::string koroglu_config(const nlohmann::json& patch);
+// The patch that selects a stance detector ("shoe" or "multicondition"; throws on any other name).
 nlohmann::json detector_patch(const std::string& which);
 // Merge patch for the position filter's params.
 nlohmann::json ekf_patch(const nlohmann::json& params);
@@ -65,6 +69,7 @@ struct KorogluScore {
     double mean_pct = 0;       // err.mean / path * 100
     std::vector<double> dx, dy;  // signed errors per footprint (for the paper's tables)
 };
+// Takes config_json as it is: build it with koroglu_config() to give the walks' gyro range.
 KorogluScore score_koroglu(int n, const std::string& config_json);
 
 struct IpolScore {

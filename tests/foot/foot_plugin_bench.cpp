@@ -16,13 +16,14 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 #include <pednav/pn_plugin.h>
 #include <pednav_sim/simulate.hpp>
+
+#include "foot_eval.hpp"
 
 namespace {
 
@@ -96,10 +97,9 @@ int main(int argc, char** argv) {
         else if (a == "--passes" && i + 1 < argc) passes = std::max(1, std::stoi(argv[++i]));
     }
     try {
-        std::ifstream in(std::string(PEDNAV_SOURCE_DIR) + "/configs/foot.json");
-        nlohmann::json cfg = nlohmann::json::parse(in);
+        namespace fe = pednav::foot_eval;
+        nlohmann::json cfg = nlohmann::json::parse(fe::foot_config(fe::ekf_patch(nlohmann::json::parse(patch))));
         auto& pipe = cfg["pipelines"]["foot"];
-        pipe["position_filter"]["params"].merge_patch(nlohmann::json::parse(patch));
 
         pednav::sim::SimOptions so;
         so.rate_hz = rate;

@@ -1,5 +1,8 @@
 // Prints the foot pipeline's accuracy on every shared foot recording, for
-// docs/foot-pipeline.md. Usage: foot_report [shoe|multicondition] [json merge patch] [quick|tables|hupt|clip]
+// docs/foot-pipeline.md. Usage: foot_report [shoe|multicondition] [json merge patch] [mode]
+// with mode full (the default: simulated walks at 400 Hz, then the recordings),
+// quick (the real recordings only), sim (the simulated walks only, at 100, 200
+// and 400 Hz), tables, hupt or clip.
 #include <cstdio>
 #include <string>
 
@@ -7,19 +10,46 @@
 
 using namespace pednav::foot_eval;
 
+namespace {
+// The simulated corridor loop and stairs, exact sensor and scaled MEMS errors.
+void print_sim(const std::string& cfg, double rate_hz) {
+    for (const char* route : {"corridor_loop", "stairs"}) {
+        for (double errors : {0.0, 1.0, 5.0, -100.0, -300.0}) {
+            SimCase c;
+            c.route = route;
+            c.sensor_errors = errors != 0;
+            c.error_scale = errors > 0 ? errors : 1.0;
+            c.accel_bias_walk_scale = errors < 0 ? -errors : 1.0;
+            c.rate_hz = rate_hz;
+            c.mounting_rpy_deg[0] = 20;
+            c.mounting_rpy_deg[1] = -30;
+            c.mounting_rpy_deg[2] = 10;
+            const SimScore s = score_sim(c, cfg);
+            std::printf("sim %-13s errors x%.0f strides %3zu/%3zu (level %zu stairs %zu) closure %.3f m %.3f %% max_h %.3f  z mean %.3f final %.3f\n",
+                        route, errors, s.strides, s.true_strides, s.level, s.stairs, s.closure_m, s.closure_pct,
+                        s.max_err_h_m, s.mean_err_z_m, s.final_err_z_m);
+        }
+    }
+}
+}  // namespace
+
 int main(int argc, char** argv) {
     const std::string det = argc > 1 ? argv[1] : "shoe";
-    nlohmann::json patch = detector_patch(det);
-    if (argc > 2) patch.merge_patch(nlohmann::json::parse(argv[2]));
-    const std::string cfg = foot_config(patch, 0.0);
-    const bool quick = argc > 3 && std::string(argv[3]) == "quick";  // real foot recordings only
+    const std::string mode = argc > 3 ? argv[3] : "full";
+    if (mode != "full" && mode != "quick" && mode != "sim" && mode != "tables" && mode != "hupt" && mode != "clip") {
+        std::fprintf(stderr, "error: unknown mode '%s' (full, quick, sim, tables, hupt or clip)\n", mode.c_str());
+        return 2;
+    }
     try {
-        if (argc > 3 && std::string(argv[3]) == "tables") {
+        nlohmann::json patch = detector_patch(det);
+        if (argc > 2) patch.merge_patch(nlohmann::json::parse(argv[2]));
+        const std::string cfg = foot_config(patch);
+        if (mode == "tables") {
             // The paper's tables: |dx|, |dy| at the footprints, ZUPT only vs ZUPT + ZARU.
             for (bool zaru : {false, true}) {
                 nlohmann::json p2 = patch;
                 p2.merge_patch(ekf_patch({{"zaru", zaru}}));
-                const std::string c2 = foot_config(p2, 0.0);
+                const std::string c2 = koroglu_config(p2);
                 std::printf("%s\n", zaru ? "ZUPT + ZARU" : "ZUPT only");
                 for (int n : {33, 35, 39, 42, 44}) {
                     const KorogluScore s = score_koroglu(n, c2);
@@ -33,7 +63,7 @@ int main(int argc, char** argv) {
             }
             return 0;
         }
-        if (argc > 3 && std::string(argv[3]) == "clip") {
+        if (mode == "clip") {
             // The xio loops with the gyro clipped as a +-500/450/400 deg/s sensor
             // would read it, against the unclipped loops.
             for (double dps : {500.0, 450.0, 400.0}) {
@@ -49,12 +79,12 @@ int main(int argc, char** argv) {
             }
             return 0;
         }
-        if (argc > 3 && std::string(argv[3]) == "hupt") {
+        if (mode == "hupt") {
             // Mean |height error| at the stance samples, ZUPT only vs the
             // preset (HUPT with the level memory), 200 Hz, four seeds.
             nlohmann::json p0 = patch;
             p0.merge_patch(ekf_patch({{"hupt", false}}));
-            const std::string zupt_cfg = foot_config(p0, 0.0);
+            const std::string zupt_cfg = foot_config(p0);
             for (const char* route : {"stairs", "building_tour"}) {
                 for (double errors : {1.0, 5.0}) {
                     for (uint64_t seed = 1; seed <= 4; ++seed) {
@@ -77,40 +107,32 @@ int main(int argc, char** argv) {
             return 0;
         }
         std::printf("detector %s\n", det.c_str());
-        for (const char* route : {"corridor_loop", "stairs"}) {
-            if (quick) break;
-            for (double errors : {0.0, 1.0, 5.0, -100.0, -300.0}) {
-                SimCase c;
-                c.route = route;
-                c.sensor_errors = errors != 0;
-                c.error_scale = errors > 0 ? errors : 1.0;
-                c.accel_bias_walk_scale = errors < 0 ? -errors : 1.0;
-                c.rate_hz = 400;
-                c.mounting_rpy_deg[0] = 20;
-                c.mounting_rpy_deg[1] = -30;
-                c.mounting_rpy_deg[2] = 10;
-                const SimScore s = score_sim(c, cfg);
-                std::printf("sim %-13s errors x%.0f strides %3zu/%3zu (level %zu stairs %zu) closure %.3f m %.3f %% max_h %.3f  z mean %.3f final %.3f\n",
-                            route, errors, s.strides, s.true_strides, s.level, s.stairs, s.closure_m, s.closure_pct,
-                            s.max_err_h_m, s.mean_err_z_m, s.final_err_z_m);
+        if (mode == "sim") {
+            for (double rate : {100.0, 200.0, 400.0}) {
+                std::printf("rate %.0f Hz\n", rate);
+                print_sim(cfg, rate);
             }
+            return 0;
         }
+        if (mode == "full") print_sim(cfg, 400);
         for (const char* w : {"short_walk", "long_walk"}) {
             const XioScore s = score_xio(w, cfg);
             std::printf("xio %-11s strides %3zu  walked %6.2f m  closure %.3f m (h %.3f)  %.2f %%\n", w, s.strides,
                         s.distance_m, s.closure_m, s.closure_h_m, s.closure_pct);
         }
+        const std::string koroglu_cfg = koroglu_config(patch);
         for (int n : {33, 35, 39, 42, 44}) {
-            const KorogluScore s = score_koroglu(n, cfg);
+            const KorogluScore s = score_koroglu(n, koroglu_cfg);
             std::printf("koroglu %d strides %3zu/%3zu  path %6.1f m  mean %.3f max %.3f final %.3f m  mean %.2f %%\n", n,
                         s.strides, s.footprints, s.path_m, s.err_m.mean, s.err_m.max, s.err_m.final, s.mean_pct);
         }
-        for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
-            for (const char* f : {"lf", "rf"}) {
-                if (quick) break;
-                const IpolScore s = score_ipol(t, f, cfg);
-                std::printf("ipol %-4s %s strides %2zu/%2zu  out %6.2f m  back %6.2f m\n", t, f, s.strides, s.footsteps,
-                            s.leg_out_m, s.leg_back_m);
+        if (mode == "full") {
+            for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
+                for (const char* f : {"lf", "rf"}) {
+                    const IpolScore s = score_ipol(t, f, cfg);
+                    std::printf("ipol %-4s %s strides %2zu/%2zu  out %6.2f m  back %6.2f m\n", t, f, s.strides,
+                                s.footsteps, s.leg_out_m, s.leg_back_m);
+                }
             }
         }
     } catch (const std::exception& e) {

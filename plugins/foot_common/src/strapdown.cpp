@@ -13,7 +13,7 @@ void Strapdown::reset_still() {
     n_mag_ = 0;
 }
 
-void Strapdown::align(int64_t /*t_ns*/) {
+void Strapdown::align() {
     const Vec3 f = n_still_ > 0 ? Vec3(sum_a_ / n_still_) : last_a_;
     double heading = cfg_.initial_heading_deg * M_PI / 180.0;
     heading_from_mag_ = false;
@@ -50,11 +50,11 @@ bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
             sum_w2_ += w.cwiseProduct(w);
             n_still_ += 1;
             t_still_last_ = t_ns;
-            if ((t_ns - t_still_start_) * 1e-9 >= cfg_.align_still_s) align(t_ns);
+            if ((t_ns - t_still_start_) * 1e-9 >= cfg_.align_still_s) align();
         } else if (n_still_ > 0 && (t_still_last_ - t_still_start_) * 1e-9 >= cfg_.align_min_still_s) {
             // Motion starts after a usable still period: align on it, then
             // integrate this sample from the last still one.
-            align(t_still_last_);
+            align();
             t_prev_ = t_still_last_;
             w_prev_ = sum_w_ / n_still_;
             have_prev_ = true;
@@ -69,7 +69,7 @@ bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
                 t_still_last_ = t_ns;
             }
         }
-        if (!aligned_ && (t_ns - t_first_) * 1e-9 >= cfg_.align_timeout_s) align(t_ns);
+        if (!aligned_ && (t_ns - t_first_) * 1e-9 >= cfg_.align_timeout_s) align();
         if (!aligned_) return false;
         if (!have_prev_) {
             t_prev_ = t_ns;

@@ -97,9 +97,6 @@ public:
     bool finish(StrideOut& s);
 
     const StrideOut& stride_out() const { return stride_; }
-    const Ekf15& ekf() const { return ekf_; }
-    double gravity() const { return g_; }
-    const Vec3& accel_bias() const { return ba_; }
 
 private:
     void stride_logic(int64_t t_ns, double dt, bool stance, const Quat& q, SampleOut& out);

@@ -61,7 +61,7 @@ struct MultiConditionConfig : StanceWindows {
 // SHOE / GLRT detector (Skog, Handel, Nilsson, Rantakokko 2010, eq. (10)):
 // T = 1/W sum_j ( |a_j - g u|^2 / sigma_a^2 + |w_j|^2 / sigma_w^2 ), with
 // u the mean specific force direction over the window; stance when T < gamma.
-// With gravity_mps2 = 0 the window's own mean |a| replaces g, which makes the
+// With gravity_mps2 = 0 the window's own |mean a| replaces g, which makes the
 // test blind to accelerometer scale errors (a sensor reading 0.97 g at rest).
 //
 // Adaptive threshold (adaptive_window_s > 0): a gait cycle holds one stance,
@@ -73,7 +73,7 @@ struct ShoeConfig : StanceWindows {
     double accel_sd_mps2 = 1.0;      // sigma_a
     double gyro_sd_radps = 0.5;      // sigma_w
     double threshold = 0.5;          // gamma (dimensionless, W-normalised)
-    double gravity_mps2 = 0.0;       // g; 0 = the window's mean |a|
+    double gravity_mps2 = 0.0;       // g; 0 = the window's |mean a|
     // W = 0.06 s, majority filter 0.05 s, adaptive threshold over 1 s.
     ShoeConfig() : StanceWindows{0.06, 0.05, 1.0, 3.0, 60.0} {}
 };
@@ -119,12 +119,17 @@ public:
 private:
     StanceDetector(Kind kind, const StanceWindows& windows, double max_rate_hz);
 
-    // Stage-1 input: one raw sample (its time is in t1_).
+    // Offset taken off |a| before the multi-condition running sums (keeps
+    // them well conditioned) and added back for the C1 test.
+    static constexpr double kAccelNormOffset = 9.81;
+
+    // Stage-1 input: one raw sample (its time is in t1_). SHOE fills a, a2
+    // and w2; the multi-condition detector am and w2.
     struct In {
         double a[3];
         double a2;  // |a|^2
         double w2;  // |w|^2
-        double am;  // |a| - 9.81 (offset keeps the running sums well conditioned)
+        double am;  // |a| - kAccelNormOffset
     };
 
     // ---- stage 1: running sums over the centred window -------------------
@@ -181,7 +186,7 @@ private:
         const double mean = m.m1 / n;
         const double var = std::max(0.0, m.m2 / n - mean * mean);
         const double sd = std::sqrt(var);
-        const double a_norm = centre.am + 9.81;
+        const double a_norm = centre.am + kAccelNormOffset;
         const bool c1 = a_norm > multi_.accel_min_mps2 && a_norm < multi_.accel_max_mps2;  // eq. (17)
         const bool c2 = sd < multi_.accel_std_max_mps2;                                     // eq. (20)
         const bool c3 = centre.w2 < multi_.gyro_max_radps * multi_.gyro_max_radps;         // eq. (22)
@@ -368,12 +373,16 @@ private:
         const uint64_t k = n1_ & mask1_;
         t1_[k] = t_ns;
         In& e = in_[k];
-        e.a[0] = a[0];
-        e.a[1] = a[1];
-        e.a[2] = a[2];
-        e.a2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+        const double a2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
         e.w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-        e.am = std::sqrt(e.a2) - 9.81;
+        if constexpr (Shoe) {
+            e.a[0] = a[0];
+            e.a[1] = a[1];
+            e.a[2] = a[2];
+            e.a2 = a2;
+        } else {
+            e.am = std::sqrt(a2) - kAccelNormOffset;
+        }
         const uint64_t n = ++n1_;
         while (c1_ < n && t_ns >= t1_[c1_ & mask1_] + h1_) emit1<Shoe, Adaptive>(out);
         // Every stage-1 result up to t - h1 is out: later stages may finish

@@ -54,13 +54,12 @@ public:
     // Overrides the attitude (and marks the estimator aligned).
     void set_attitude(const Quat& q_enu_from_body);
 
-    bool aligned() const { return aligned_; }
     const Quat& q() const { return q_; }
     const Vec3& gyro_bias() const { return bias_; }
     bool heading_from_magnetometer() const { return heading_from_mag_; }
 
 private:
-    void align(int64_t t_ns);
+    void align();
     void reset_still();
 
     StrapdownConfig cfg_;
