@@ -264,7 +264,12 @@ SimScore score_sim(const SimCase& c, const std::string& config_json) {
                       &m.gyro_noise_radps_per_rthz, &m.gyro_bias_radps, &m.gyro_bias_rw_radps_per_rts, &m.gyro_scale})
         *v *= c.error_scale;
     m.accel_bias_rw_mps2_per_rts *= c.accel_bias_walk_scale;
-    const sim::SimOutput out = sim::simulate(sim::builtin_route(c.route), so);
+    so.heel_strike_g = c.heel_strike_g;
+    sim::Route route = sim::builtin_route(c.route);
+    if (c.speed_mps > 0) route.speed_mps = c.speed_mps;
+    if (c.step_length_m > 0) route.step_length_m = c.step_length_m;
+    if (c.stance_fraction > 0) route.stance_fraction = c.stance_fraction;
+    const sim::SimOutput out = sim::simulate(route, so);
     auto doc = nlohmann::json::parse(config_json);
     doc["imu_rate_hz"] = c.rate_hz;
     ReplayOptions o;

@@ -97,6 +97,12 @@ struct SimCase {
     double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};
     double error_scale = 1.0;  // multiplies every IMU error of the simulator's default model
     double accel_bias_walk_scale = 1.0;  // and this the accelerometer bias random walk once more
+    // Gait overrides (0: the route's own): level-floor speed, step length
+    // (half a stride) and the share of a stride the foot is flat and still.
+    double speed_mps = 0.0;
+    double step_length_m = 0.0;
+    double stance_fraction = 0.0;
+    double heel_strike_g = 0.0;  // landing transient on level floors (0: none)
 };
 SimScore score_sim(const SimCase& c, const std::string& config_json);
 

@@ -3,6 +3,7 @@
 // with mode full (the default: simulated walks at 400 Hz, then the recordings),
 // quick (the real recordings only), sim (the simulated walks only, at 100, 200
 // and 400 Hz), tables, hupt or clip.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -31,13 +32,63 @@ void print_sim(const std::string& cfg, double rate_hz) {
         }
     }
 }
+
+// Gaits, sensor mountings and rates the pipeline was not tuned on: the
+// corridor loop at every combination, three seeds each, default MEMS errors.
+struct Gait {
+    const char* name;
+    double speed_mps, step_length_m, stance_fraction, heel_strike_g;
+};
+void print_sweep(const std::string& cfg) {
+    static const Gait gaits[] = {{"slow", 0.8, 0.55, 0.36, 0.0},
+                                 {"normal", 1.3, 0.7, 0.28, 0.0},
+                                 {"brisk", 1.9, 0.85, 0.2, 2.0},
+                                 {"jog", 3.0, 1.1, 0.12, 3.0}};
+    static const double mounts[][3] = {{0, 0, 0}, {20, -30, 10}, {180, 0, 0}, {90, 0, 0}, {0, -80, 0}, {-150, 40, 120}};
+    std::vector<double> all;
+    for (const Gait& g : gaits) {
+        for (double rate : {100.0, 200.0, 256.0, 400.0}) {
+            std::vector<double> pct;
+            size_t wrong_strides = 0;
+            for (const auto& m : mounts) {
+                for (uint64_t seed = 1; seed <= 3; ++seed) {
+                    SimCase c;
+                    c.route = "corridor_loop";
+                    c.rate_hz = rate;
+                    c.seed = seed;
+                    for (int i = 0; i < 3; ++i) c.mounting_rpy_deg[i] = m[i];
+                    c.speed_mps = g.speed_mps;
+                    c.step_length_m = g.step_length_m;
+                    c.stance_fraction = g.stance_fraction;
+                    c.heel_strike_g = g.heel_strike_g;
+                    const SimScore s = score_sim(c, cfg);
+                    pct.push_back(s.closure_pct);
+                    all.push_back(s.closure_pct);
+                    if (s.strides != s.true_strides) ++wrong_strides;
+                    if (s.strides != s.true_strides || s.closure_pct > 0.5)
+                        std::printf("  %s %.0f Hz mount %.0f/%.0f/%.0f seed %llu: strides %zu/%zu closure %.3f %%\n", g.name,
+                                    rate, m[0], m[1], m[2], static_cast<unsigned long long>(seed), s.strides,
+                                    s.true_strides, s.closure_pct);
+                }
+            }
+            const Stats st = stats_of(pct);
+            std::sort(pct.begin(), pct.end());
+            std::printf("sweep %-6s %3.0f Hz  runs %2zu  stride count wrong %zu  closure %% min %.3f median %.3f max %.3f\n",
+                        g.name, rate, pct.size(), wrong_strides, st.min, pct[pct.size() / 2], st.max);
+        }
+    }
+    std::sort(all.begin(), all.end());
+    std::printf("sweep all  runs %zu  closure %% median %.3f  90th %.3f  max %.3f\n", all.size(), all[all.size() / 2],
+                all[all.size() * 9 / 10], all.back());
+}
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::string det = argc > 1 ? argv[1] : "shoe";
     const std::string mode = argc > 3 ? argv[3] : "full";
-    if (mode != "full" && mode != "quick" && mode != "sim" && mode != "tables" && mode != "hupt" && mode != "clip") {
-        std::fprintf(stderr, "error: unknown mode '%s' (full, quick, sim, tables, hupt or clip)\n", mode.c_str());
+    if (mode != "full" && mode != "quick" && mode != "sim" && mode != "tables" && mode != "hupt" && mode != "clip" &&
+        mode != "sweep") {
+        std::fprintf(stderr, "error: unknown mode '%s' (full, quick, sim, sweep, tables, hupt or clip)\n", mode.c_str());
         return 2;
     }
     try {
@@ -112,6 +163,10 @@ int main(int argc, char** argv) {
                 std::printf("rate %.0f Hz\n", rate);
                 print_sim(cfg, rate);
             }
+            return 0;
+        }
+        if (mode == "sweep") {
+            print_sweep(cfg);
             return 0;
         }
         if (mode == "full") print_sim(cfg, 400);

@@ -3,6 +3,7 @@
 // plus the plugin contract (strict params, determinism, records).
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 
 #include <Eigen/Eigenvalues>
@@ -79,6 +80,38 @@ TEST_CASE("issue 3: simulated 3 x 40 m corridor loop closes within 0.3 %") {
     }
 }
 
+
+TEST_CASE("gaits, mountings and rates the preset was not tuned on: every stride found, the loop closes") {
+    // A slow walk and a jog (3 m/s, the foot flat for 12 % of a stride, 3 g
+    // landings), the sensor upside down or standing on its end, at 100 and
+    // 256 Hz. `foot_report shoe '{}' sweep` prints the whole grid (288 runs:
+    // median 0.19 %, largest 1.05 %, from the gyro scale-factor errors).
+    struct Gait {
+        double speed_mps, step_length_m, stance_fraction, heel_strike_g;
+    };
+    for (const Gait g : {Gait{0.8, 0.55, 0.36, 0.0}, Gait{3.0, 1.1, 0.12, 3.0}}) {
+        for (const std::array<double, 2> roll_pitch : {std::array<double, 2>{180, 0}, std::array<double, 2>{0, -80}}) {
+            for (double rate : {100.0, 256.0}) {
+                SimCase c;
+                c.rate_hz = rate;
+                c.mounting_rpy_deg[0] = roll_pitch[0];
+                c.mounting_rpy_deg[1] = roll_pitch[1];
+                c.speed_mps = g.speed_mps;
+                c.step_length_m = g.step_length_m;
+                c.stance_fraction = g.stance_fraction;
+                c.heel_strike_g = g.heel_strike_g;
+                const SimScore s = score_sim(c, preset());
+                CAPTURE(g.speed_mps);
+                CAPTURE(roll_pitch[1]);
+                CAPTURE(rate);
+                CAPTURE(s.closure_pct);
+                CHECK(s.strides == s.true_strides);
+                CHECK(s.level == s.strides);
+                CHECK(s.closure_pct < 1.5);
+            }
+        }
+    }
+}
 TEST_CASE("issue 3: clipped gyro: the xio loops clipped at 500 deg/s stay on their unclipped footprints") {
     // The NGIMU reads up to 2000 deg/s; clipped as a +-500 deg/s sensor would
     // read it (200-300 samples per loop), the swings lose rotation. With the
