@@ -201,6 +201,7 @@ KorogluScore score_koroglu(int n, const std::string& config_json) {
         ex.push_back(p.pos_enu_m[0]);
         ey.push_back(p.pos_enu_m[1]);
     }
+    for (size_t i = 1; i < ex.size(); ++i) sc.est_path_m += std::hypot(ex[i] - ex[i - 1], ey[i] - ey[i - 1]);
     const double x0 = ex[0], y0 = ey[0];
     for (size_t i = 0; i < ex.size(); ++i) {
         ex[i] -= x0;
@@ -248,6 +249,13 @@ IpolScore score_ipol(const std::string& trial, const std::string& foot, const st
     sc.leg_back_m = hypot2(r.positions[far].pos_enu_m, r.positions.back().pos_enu_m);
     sc.strides = r.strides.size();
     sc.footsteps = meta.at(foot == "lf" ? "LeftFootEvents" : "RightFootEvents").size();
+    // The dataset's own legs: out from the walk's start to the U-turn's, back
+    // from the U-turn's end to the walk's end (annotated sample indices, 100 Hz).
+    const auto& walk = meta.at("TrialBoundaries");
+    const auto& turn = meta.at("UTurnBoundaries");
+    const auto at = [&](const nlohmann::json& index) { return position_at(r, index.get<double>() / 100.0).pos_enu_m; };
+    sc.annotated_out_m = hypot2(at(walk[0]), at(turn[0]));
+    sc.annotated_back_m = hypot2(at(turn[1]), at(walk[1]));
     return sc;
 }
 

@@ -65,6 +65,7 @@ struct KorogluScore {
     size_t strides = 0;
     size_t footprints = 0;     // GCP rows - 1 (strides of the ground truth)
     double path_m = 0;         // GCP path length
+    double est_path_m = 0;     // the same path through the estimated footprints (stride-length scale)
     Stats err_m;               // horizontal error at each footprint (after the 5-stride rotation fit)
     double mean_pct = 0;       // err.mean / path * 100
     std::vector<double> dx, dy;  // signed errors per footprint (for the paper's tables)
@@ -74,7 +75,8 @@ KorogluScore score_koroglu(int n, const std::string& config_json);
 
 struct IpolScore {
     std::string name;
-    double leg_out_m = 0, leg_back_m = 0;
+    double leg_out_m = 0, leg_back_m = 0;  // start to the farthest point, and from there to the end
+    double annotated_out_m = 0, annotated_back_m = 0;  // between the annotated walk and U-turn boundaries
     size_t strides = 0, footsteps = 0;
 };
 IpolScore score_ipol(const std::string& trial, const std::string& foot, const std::string& config_json);

@@ -178,15 +178,18 @@ int main(int argc, char** argv) {
         const std::string koroglu_cfg = koroglu_config(patch);
         for (int n : {33, 35, 39, 42, 44}) {
             const KorogluScore s = score_koroglu(n, koroglu_cfg);
-            std::printf("koroglu %d strides %3zu/%3zu  path %6.1f m  mean %.3f max %.3f final %.3f m  mean %.2f %%\n", n,
-                        s.strides, s.footprints, s.path_m, s.err_m.mean, s.err_m.max, s.err_m.final, s.mean_pct);
+            std::printf("koroglu %d strides %3zu/%3zu  path %6.1f m (estimated %+.1f %%)  mean %.3f max %.3f final %.3f m  mean %.2f %%\n",
+                        n, s.strides, s.footprints, s.path_m, 100.0 * (s.est_path_m / s.path_m - 1.0), s.err_m.mean,
+                        s.err_m.max, s.err_m.final, s.mean_pct);
         }
         if (mode == "full") {
             for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
                 for (const char* f : {"lf", "rf"}) {
                     const IpolScore s = score_ipol(t, f, cfg);
-                    std::printf("ipol %-4s %s strides %2zu/%2zu  out %6.2f m  back %6.2f m\n", t, f, s.strides,
-                                s.footsteps, s.leg_out_m, s.leg_back_m);
+                    std::printf("ipol %-4s %s strides %2zu/%2zu  out %6.2f m  back %6.2f m  (annotated: out %6.2f m  back "
+                                "%6.2f m)\n",
+                                t, f, s.strides, s.footsteps, s.leg_out_m, s.leg_back_m, s.annotated_out_m,
+                                s.annotated_back_m);
                 }
             }
         }

@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <pednav_foot/ekf15.hpp>
+#include <pednav_foot/foot_ins.hpp>
 #include <pednav_foot/level_memory.hpp>
 #include <pednav_foot/so3.hpp>
 #include <pednav_foot/stance_detector.hpp>
@@ -385,4 +386,29 @@ TEST_CASE("level memory: a floor reached again gets its first height back, a new
     CHECK(off.arrive(1.0) == 1.0);
     CHECK(off.arrive(1.0) == 1.0);
     CHECK(off.size() == 0);
+}
+
+TEST_CASE("ZUPT on a rolling foot expects the sensor's velocity about the contact point") {
+    // The foot stands on the ground and pitches at 2 rad/s about the ENU east
+    // axis through its contact point; the sensor, 0.08 m above the sole, then
+    // moves north at 2 x 0.08 = 0.16 m/s. The plain ZUPT (height 0) holds the
+    // velocity at zero.
+    for (double height : {0.0, 0.08}) {
+        FootInsConfig c;
+        c.sensor_height_m = height;
+        c.zupt_lever_m = 0.0;
+        c.zaru = false;
+        c.hupt = false;
+        c.gravity_mps2 = 9.80665;
+        FootIns ins(c);
+        ins.set_start(Vec3::Zero(), NAN);
+        SampleOut out;
+        const Vec3 w(-2.0, 0.0, 0.0), a(0.0, 0.0, 9.80665);
+        for (int k = 0; k < 40; ++k)
+            ins.step(k * 5'000'000LL, a, w, Quat::Identity(), Vec3::Zero(), true, out);
+        CAPTURE(height);
+        CHECK(out.vel.y() == doctest::Approx(2.0 * height).epsilon(1e-3));
+        CHECK(std::abs(out.vel.z()) < 1e-6);
+        CHECK(std::abs(out.vel.x()) < 1e-6);
+    }
 }

@@ -99,10 +99,18 @@ void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in,
         const Vec3 w_est = w - bg;
         const double rate = w_est.norm();
         if (cfg_.zupt) {
-            // A stance foot rolls about its contact point: the sensor ahead of
-            // it moves at about |w| times the lever.
+            // A stance foot rolls about its contact point on the ground. The
+            // sensor sits sensor_height_m above it, so it moves horizontally
+            // at w x (h up) = h (w_n, -w_e, 0) in ENU (forward, for the heel
+            // and the toe rocker alike); the part of the lever along the
+            // foot (vertical velocity, its sign depends on which end the foot
+            // rolls on) is left to the noise, which grows with the rate.
+            // The measurement's small dependence on the attitude and gyro
+            // bias errors (h |w| times them) is neglected: H selects velocity.
             const double sd = cfg_.zupt_sd_mps + cfg_.zupt_lever_m * rate;
-            const double z[3] = {-v_.x(), -v_.y(), -v_.z()};
+            const Vec3 w_enu = R * w_est;
+            const double h = cfg_.sensor_height_m;
+            const double z[3] = {h * w_enu.y() - v_.x(), -h * w_enu.x() - v_.y(), -v_.z()};
             const double var[3] = {sd * sd, sd * sd, sd * sd};
             ekf_.update_block3(Ekf15::VEL, z, var);
         }

@@ -9,7 +9,9 @@
 //   v_k   = v_{k-1} + ((f_{k-1} + f_k)/2 - g) dt   mid-interval, cf. eq. (10)
 //   p_k   = p_{k-1} + (v_{k-1} + v_k)/2 dt         cf. eq. (11)
 // then P is propagated (eq. (32)) and, in stance, the measurements
-//   ZUPT  z = 0 - v_k          = dv + n     (eq. (34)-(35), velocity rows)
+//   ZUPT  z = v_roll - v_k     = dv + n     (eq. (34)-(35), velocity rows; v_roll =
+//         h (w_enu x up), the sensor h above the sole of a foot rolling on the ground;
+//         h = sensor_height_m, 0 gives the paper's z = 0 - v_k)
 //   ZARU  z = w_k - bg         = dbg + n    (angular rate rows)
 //   HUPT  z = h_ref - p_k,z    = dp_z + n   (foot-imu-height-update-hupt eq. (5);
 //         after stairs h_ref is a level stood on before when one is near, level_memory.hpp)
@@ -46,6 +48,10 @@ struct FootInsConfig {
     double zaru_sd_radps = 0.02;
     double zaru_max_radps = 0.1;      // ZARU only while |w - bg| is below this (a rolling foot is not still)
     double zupt_lever_m = 0.3;        // ZUPT sd grows by this times |w - bg| (sensor ahead of the pivot)
+    // Height of the sensor above the sole: a stance foot rolling about its
+    // contact point moves the sensor horizontally at (w x up) times this, and
+    // the ZUPT expects that velocity instead of zero (0 = a plain ZUPT).
+    double sensor_height_m = 0.05;
     double hupt_sd_m = 0.01;
     double level_match_m = 0.1;       // a level reached after stairs within this of one stood on before is that level
     // Stride segmentation and level/stairs classification.
