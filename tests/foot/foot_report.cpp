@@ -1,6 +1,7 @@
 // Prints the foot pipeline's accuracy on every shared foot recording, for
 // docs/foot-pipeline.md. Usage: foot_report [shoe|multicondition] [json merge patch] [mode]
 // with mode full (the default: simulated walks at 400 Hz, then the recordings),
+// sweep (the corridor loop over gaits, mountings and rates),
 // quick (the real recordings only), sim (the simulated walks only, at 100, 200
 // and 400 Hz), tables, hupt or clip.
 #include <algorithm>
