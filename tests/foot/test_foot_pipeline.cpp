@@ -289,6 +289,7 @@ TEST_CASE("foot plugins reject unknown or bad params, naming the key") {
     };
     expect_error(ekf_patch({{"zupt_sd", 0.01}}), "/pipelines/foot/position_filter/params/zupt_sd");
     expect_error(ekf_patch({{"zupt_sd_mps", -1.0}}), "zupt_sd_mps");
+    expect_error(ekf_patch({{"sensor_height_m", -0.05}}), "sensor_height_m");
     nlohmann::json p;
     p["pipelines"]["foot"]["step_detector"]["params"]["window_samples"] = 31;
     expect_error(p, "window_samples");
