@@ -11,22 +11,19 @@ using namespace pednav::sdk;
 using pednav::foot::Quat;
 using pednav::foot::Vec3;
 
-class FootEkf15 : public PositionFilter {
+// The foot INS as a position filter, over either covariance algebra (Ins is
+// FootIns or FootInsDense); the two plugins below differ only in their ids.
+template <class Ins>
+class FootInsFilter : public PositionFilter {
 public:
-    static constexpr const char* kId = "org.pednav.foot.ekf15";
     static constexpr const char* kVendor = "pednav";
     static constexpr const char* const kFeatures[] = {"mount:foot", "needs:gait_phase", "needs:attitude", nullptr};
-    static constexpr const char* kName = "foot INS, 15-state error-state EKF";
-    static constexpr const char* kVersion = "1.0.0";
-    static constexpr const char* kDescription =
-        "mid-interval velocity/position mechanization, error-state EKF [attitude, gyro bias, position, velocity, "
-        "accel bias] with ZUPT, ZARU (foot-imu-zupt-zaru-ekf) and HUPT (foot-imu-height-update-hupt)";
     static constexpr uint64_t kConsumes =
         PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_GAIT_PHASE) | PN_REC_MASK(PN_REC_ATTITUDE);
     static constexpr uint64_t kProduces =
         PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_ATTITUDE_CORRECTION);
 
-    FootEkf15(Params& p, const CreateContext&) : ins_(read(p)) {}
+    FootInsFilter(Params& p, const CreateContext&) : ins_(read(p)) {}
 
     // A sample is processed once its attitude and its gait phase are both in,
     // whichever comes first in the batch; without a gait phase for it (no
@@ -138,7 +135,7 @@ private:
         return c;
     }
 
-    pednav::foot::FootIns ins_;
+    Ins ins_;
     pednav::foot::SampleOut out_;
     pn_imu_t imu_{};
     pn_attitude_t att_{};
@@ -147,6 +144,29 @@ private:
     bool stance_ = false;
 };
 
+class FootEkf15 : public FootInsFilter<pednav::foot::FootIns> {
+public:
+    static constexpr const char* kId = "org.pednav.foot.ekf15";
+    static constexpr const char* kName = "foot INS, 15-state error-state EKF";
+    static constexpr const char* kVersion = "1.0.0";
+    static constexpr const char* kDescription =
+        "mid-interval velocity/position mechanization, error-state EKF [attitude, gyro bias, position, velocity, "
+        "accel bias] with ZUPT, ZARU (foot-imu-zupt-zaru-ekf) and HUPT (foot-imu-height-update-hupt)";
+    using FootInsFilter::FootInsFilter;
+};
+
+class FootEkf15Dense : public FootInsFilter<pednav::foot::FootInsDense> {
+public:
+    static constexpr const char* kId = "org.pednav.foot.ekf15.dense";
+    static constexpr const char* kName = "foot INS, 15-state error-state EKF, dense reference";
+    static constexpr const char* kVersion = "1.0.0";
+    static constexpr const char* kDescription =
+        "org.pednav.foot.ekf15 with textbook dense covariance algebra (15 x 15 Phi P Phi^T, Joseph form with a "
+        "dense H): the same track to round-off, about ten times the arithmetic; a reference for checks and "
+        "benchmarks";
+    using FootInsFilter::FootInsFilter;
+};
+
 }  // namespace
 
-PEDNAV_PLUGIN_LIBRARY("org.pednav.foot.ekf15", "1.0.0", FootEkf15)
+PEDNAV_PLUGIN_LIBRARY("org.pednav.foot.ekf15", "1.0.0", FootEkf15, FootEkf15Dense)

@@ -3,7 +3,9 @@
 // back, as the engine would: stance detection + attitude + EKF, input
 // generation excluded. Prints figures; not a test.
 //
-//   foot_plugin_bench [--route building_tour] [--rate 200] [--patch '{"joseph_form":false}'] [--passes 10] [--callgrind]
+//   foot_plugin_bench [--route building_tour] [--rate 200] [--patch '{"joseph_form":false}'] [--passes 10]
+//                     [--filter org.pednav.foot.ekf15.dense] [--callgrind]
+// --filter picks the position filter plugin (default: the preset's).
 // Each pass runs the whole walk from reset plugins; the best pass gives
 // samples_per_second, the median pass median_samples_per_second.
 //   valgrind --tool=callgrind --instr-atstart=no foot_plugin_bench --callgrind
@@ -84,7 +86,7 @@ Node create(const std::string& library, const std::string& id, const nlohmann::j
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string route = "building_tour", patch = "{}";
+    std::string route = "building_tour", patch = "{}", filter;
     double rate = 200;
     bool callgrind = false;
     int passes = 10;
@@ -93,6 +95,7 @@ int main(int argc, char** argv) {
         if (a == "--route" && i + 1 < argc) route = argv[++i];
         else if (a == "--rate" && i + 1 < argc) rate = std::stod(argv[++i]);
         else if (a == "--patch" && i + 1 < argc) patch = argv[++i];
+        else if (a == "--filter" && i + 1 < argc) filter = argv[++i];
         else if (a == "--callgrind") callgrind = true;
         else if (a == "--passes" && i + 1 < argc) passes = std::max(1, std::stoi(argv[++i]));
     }
@@ -100,6 +103,7 @@ int main(int argc, char** argv) {
         namespace fe = pednav::foot_eval;
         nlohmann::json cfg = nlohmann::json::parse(fe::foot_config(fe::ekf_patch(nlohmann::json::parse(patch))));
         auto& pipe = cfg["pipelines"]["foot"];
+        if (!filter.empty()) pipe["position_filter"]["plugin"] = filter;
 
         pednav::sim::SimOptions so;
         so.rate_hz = rate;

@@ -369,3 +369,34 @@ TEST_CASE("a start heading given to the engine turns the track (yaw correction a
         CHECK(std::hypot(t[0] - ex, t[1] - ey) < 1e-6 + 1e-6 * i);
     }
 }
+
+TEST_CASE("the dense textbook EKF plugin gives the same track as the hand-written kernels, to round-off") {
+    // org.pednav.foot.ekf15.dense: 15 x 15 Phi P Phi^T and a dense-H Joseph
+    // update. A real walk with clipping repair, brisk stances and ZARU
+    // (koroglu 35) and a simulated stairs walk with HUPT.
+    nlohmann::json dense;
+    dense["pipelines"]["foot"]["position_filter"]["plugin"] = "org.pednav.foot.ekf15.dense";
+    const std::string koroglu = data_dir() + "/koroglu-foot-gcp/SensorConnectData_35.csv";
+    const ReplayResult fast_run = run_file(koroglu, koroglu_config(nlohmann::json::object()));
+    const ReplayResult dense_run = run_file(koroglu, koroglu_config(dense));
+    REQUIRE(fast_run.positions.size() == dense_run.positions.size());
+    CHECK(fast_run.strides.size() == dense_run.strides.size());
+    double max_diff_m = 0, max_cov_rel = 0;
+    for (size_t i = 0; i < fast_run.positions.size(); ++i) {
+        const pn_position_t &a = fast_run.positions[i], &b = dense_run.positions[i];
+        max_diff_m = std::max(max_diff_m, std::hypot(a.pos_enu_m[0] - b.pos_enu_m[0], a.pos_enu_m[1] - b.pos_enu_m[1],
+                                                     a.pos_enu_m[2] - b.pos_enu_m[2]));
+        max_cov_rel = std::max(max_cov_rel, std::abs(a.cov_enu_m2[0] - b.cov_enu_m2[0]) / a.cov_enu_m2[0]);
+    }
+    CAPTURE(max_diff_m);
+    CAPTURE(max_cov_rel);
+    CHECK(max_diff_m < 1e-9);  // measured: 7e-14 m
+    CHECK(max_cov_rel < 1e-9);
+    SimCase c;
+    c.route = "stairs";
+    const SimScore fast_sim = score_sim(c, preset());
+    const SimScore dense_sim = score_sim(c, foot_config(dense));
+    CHECK(fast_sim.strides == dense_sim.strides);
+    CHECK(std::abs(fast_sim.closure_m - dense_sim.closure_m) < 1e-9);
+    CHECK(std::abs(fast_sim.mean_err_z_m - dense_sim.mean_err_z_m) < 1e-9);
+}

@@ -6,7 +6,8 @@
 
 namespace pednav::foot {
 
-FootIns::FootIns(const FootInsConfig& c)
+template <class Filter>
+FootInsT<Filter>::FootInsT(const FootInsConfig& c)
     : cfg_(c), heel_strike_rad_(c.heel_strike_deg * M_PI / 180.0), levels_(c.level_match_m) {
     // |toe-up| <= the rotation angle from the anchor attitude, 2 acos|w| of
     // the relative quaternion: below the threshold (with a margin far above
@@ -31,12 +32,14 @@ FootIns::FootIns(const FootInsConfig& c)
     if (!g_learning_) g_ = c.gravity_mps2;
 }
 
-void FootIns::set_start(const Vec3& pos, double heading_rad) {
+template <class Filter>
+void FootInsT<Filter>::set_start(const Vec3& pos, double heading_rad) {
     start_pos_ = pos;
     start_heading_ = heading_rad;
 }
 
-void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in, const Vec3& bg, bool stance,
+template <class Filter>
+void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in, const Vec3& bg, bool stance,
                    SampleOut& out) {
     Quat q = q_in;
     out.correction = false;
@@ -151,7 +154,8 @@ void FootIns::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Quat& q_in,
     out.heading_rad = heading_of(R);  // R is q's matrix (recomputed after an injection)
 }
 
-bool FootIns::close_stance(StrideOut& s) {
+template <class Filter>
+bool FootInsT<Filter>::close_stance(StrideOut& s) {
     const double duration = (last_t_ - stance_start_t_) * 1e-9;
     if (duration < cfg_.min_stance_s) return false;
     const double heading = heading_of(last_stance_q_);
@@ -186,7 +190,8 @@ bool FootIns::close_stance(StrideOut& s) {
     return emitted;
 }
 
-void FootIns::begin_stance(int64_t t_ns) {
+template <class Filter>
+void FootInsT<Filter>::begin_stance(int64_t t_ns) {
     in_stance_ = true;
     stance_start_t_ = t_ns;
     if (!have_anchor_) {
@@ -203,7 +208,8 @@ void FootIns::begin_stance(int64_t t_ns) {
     }
 }
 
-void FootIns::stride_logic(int64_t t_ns, double dt, bool stance, const Quat& q, SampleOut& out) {
+template <class Filter>
+void FootInsT<Filter>::stride_logic(int64_t t_ns, double dt, bool stance, const Quat& q, SampleOut& out) {
     if (stance) {
         last_t_ = t_ns;
         last_stance_pos_ = p_;
@@ -234,10 +240,14 @@ void FootIns::stride_logic(int64_t t_ns, double dt, bool stance, const Quat& q, 
     }
 }
 
-bool FootIns::finish(StrideOut& s) {
+template <class Filter>
+bool FootInsT<Filter>::finish(StrideOut& s) {
     if (!in_stance_) return false;
     in_stance_ = false;
     return close_stance(s);
 }
+
+template class FootInsT<Ekf15>;
+template class FootInsT<Ekf15Dense>;
 
 }  // namespace pednav::foot

@@ -23,6 +23,7 @@
 #include <cstdint>
 
 #include "ekf15.hpp"
+#include "ekf15_dense.hpp"
 #include "level_memory.hpp"
 
 namespace pednav::foot {
@@ -87,9 +88,13 @@ struct SampleOut {
     bool stride = false;        // `stride_out` holds a stride that ended at the previous sample
 };
 
-class FootIns {
+// Filter: the covariance algebra, Ekf15 (hand-written kernels, the plugin
+// org.pednav.foot.ekf15) or Ekf15Dense (textbook dense Eigen, the reference
+// plugin org.pednav.foot.ekf15.dense); both have the same interface.
+template <class Filter>
+class FootInsT {
 public:
-    explicit FootIns(const FootInsConfig& c);
+    explicit FootInsT(const FootInsConfig& c);
 
     // Start position and (when finite) start heading; the heading is applied
     // as a yaw correction at the first sample.
@@ -112,7 +117,7 @@ private:
     FootInsConfig cfg_;
     double heel_strike_rad_;
     double skip_cos_half_;          // swing samples with |cos(angle/2) from the anchor| above this are not pitched
-    Ekf15 ekf_;
+    Filter ekf_;
     Ekf15::Noise noise_;
     bool started_ = false;
     Vec3 start_pos_ = Vec3::Zero();
@@ -147,5 +152,10 @@ private:
     int stride_index_ = 0;
     StrideOut stride_{};
 };
+
+using FootIns = FootInsT<Ekf15>;
+using FootInsDense = FootInsT<Ekf15Dense>;
+extern template class FootInsT<Ekf15>;
+extern template class FootInsT<Ekf15Dense>;
 
 }  // namespace pednav::foot

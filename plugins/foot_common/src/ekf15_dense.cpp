@@ -1,0 +1,54 @@
+#include "pednav_foot/ekf15_dense.hpp"
+
+#include <Eigen/LU>
+
+namespace pednav::foot {
+
+void Ekf15Dense::reset_covariance(const double* diag) {
+    P_.setZero();
+    x_.setZero();
+    if (diag)
+        for (int i = 0; i < N; ++i) P_(i, i) = diag[i];
+}
+
+void Ekf15Dense::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
+    // Phi = I + A dt with the continuous error dynamics of ekf15.hpp.
+    MatN Phi = MatN::Identity();
+    Phi.block<3, 3>(ATT, BG) = -R * dt;
+    Phi.block<3, 3>(POS, VEL) = Mat3::Identity() * dt;
+    Phi.block<3, 3>(VEL, ATT) = -skew(f) * dt;
+    Phi.block<3, 3>(VEL, BA) = -R * dt;
+    MatN Q = MatN::Zero();
+    for (int i = 0; i < 3; ++i) {
+        Q(ATT + i, ATT + i) = q.gyro_psd * dt;
+        Q(BG + i, BG + i) = q.gyro_bias_psd * dt;
+        Q(VEL + i, VEL + i) = q.accel_psd * dt;
+        Q(BA + i, BA + i) = q.accel_bias_psd * dt;
+    }
+    P_ = Phi * P_ * Phi.transpose() + Q;
+}
+
+template <int M>
+void Ekf15Dense::update(int i0, const double* z, const double* var) {
+    Eigen::Matrix<double, M, N> H = Eigen::Matrix<double, M, N>::Zero();
+    Eigen::Matrix<double, M, M> Rm = Eigen::Matrix<double, M, M>::Zero();
+    Eigen::Matrix<double, M, 1> zm;
+    for (int j = 0; j < M; ++j) {
+        H(j, i0 + j) = 1.0;
+        Rm(j, j) = var[j];
+        zm(j) = z[j];
+    }
+    const Eigen::Matrix<double, M, M> S = H * P_ * H.transpose() + Rm;
+    if (!(S.determinant() > 0)) return;
+    const Eigen::Matrix<double, N, M> K = P_ * H.transpose() * S.inverse();
+    x_ += K * (zm - H * x_);
+    const MatN IKH = MatN::Identity() - K * H;
+    if (joseph_) P_ = IKH * P_ * IKH.transpose() + K * Rm * K.transpose();
+    else P_ = IKH * P_;
+}
+
+void Ekf15Dense::update_scalar(int i, double z, double var) { update<1>(i, &z, &var); }
+
+void Ekf15Dense::update_block3(int i0, const double z[3], const double var[3]) { update<3>(i0, z, var); }
+
+}  // namespace pednav::foot
