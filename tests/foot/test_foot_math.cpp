@@ -55,6 +55,19 @@ TEST_CASE("quaternion exp and log are inverse, also near zero") {
     }
 }
 
+TEST_CASE("renormalize brings a product of unit quaternions back to unit length, and far-off ones exactly") {
+    Quat q(0.3, -0.5, 0.7, 0.2);
+    q.normalize();
+    Quat near = q;
+    near.coeffs() *= 1.0 + 3e-9;  // |q|^2 = 1 + 6e-9
+    renormalize(near);
+    CHECK(std::abs(near.squaredNorm() - 1.0) < 4e-16);
+    CHECK(near.angularDistance(q) < 1e-15);
+    Quat far(2.0, 0.0, 0.0, 0.0);
+    renormalize(far);
+    CHECK(far.w() == 1.0);
+}
+
 TEST_CASE("atan2_fast agrees with libm's atan2 to about an ulp in every octant") {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0);

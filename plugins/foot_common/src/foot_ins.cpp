@@ -134,7 +134,7 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
         v_ += Vec3(x[9], x[10], x[11]);
         ba_ += Vec3(x[12], x[13], x[14]);
         q = quat_exp(phi) * q;
-        q.normalize();
+        renormalize(q);
         out.correction = true;
         out.rot_enu_rad += phi;
         out.gyro_bias_delta = dbg;

@@ -88,7 +88,7 @@ bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
         Vec3 theta = 0.5 * (w0 + w1) * dt;
         if (cfg_.coning) theta += (dt * dt / 12.0) * w0.cross(w1);
         q_ = q_ * quat_exp(theta);
-        q_.normalize();
+        renormalize(q_);
     }
     t_prev_ = t_ns;
     if (dt > 0) w_prev2_ = w_prev_;
@@ -133,7 +133,7 @@ void Strapdown::on_mag(int64_t t_ns, const Vec3& m) {
 
 void Strapdown::apply_correction(const Vec3& rot, const Vec3& dbias) {
     q_ = quat_exp(rot) * q_;
-    q_.normalize();
+    renormalize(q_);
     bias_ += dbias;
 }
 

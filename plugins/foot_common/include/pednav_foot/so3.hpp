@@ -42,13 +42,14 @@ inline double atan2_fast(double y, double x) {
         base = M_PI_4;
         lo = 3.061616997868382943065e-17;  // pi/4 - M_PI_4
     }
-    const double z = t * t;
-    const double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
-                       7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z -
+    const double z = t * t, z2 = z * z;
+    // Estrin's scheme (pairs of terms, then z^2): a shorter dependency chain than Horner's.
+    const double p = ((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z2 +
+                      (-7.500855792314704667340e1 * z - 1.228866684490136173410e2)) * z -
                      6.485021904942025371773e1;
-    const double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
-                       4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z +
-                     1.945506571482613964425e2;
+    const double q = (z2 * (z + 2.485846490142306297962e1) + (1.650270098316988542046e2 * z +
+                      4.328810604912902668951e2)) * z2 +
+                     (4.853903996359136964868e2 * z + 1.945506571482613964425e2);
     double r = base + ((t * (z * p / q) + lo) + t);
     if (swap) r = (M_PI_2 - r) + 6.123233995736765886130e-17;  // + (pi/2 - M_PI_2)
     if (x < 0) r = (M_PI - r) + 1.224646799147353207173e-16;   // + (pi - M_PI)
@@ -70,6 +71,16 @@ inline Quat quat_exp(const Vec3& r) {
         c = std::cos(0.5 * a);
     }
     return Quat(c, s * r.x(), s * r.y(), s * r.z());
+}
+
+// Brings q back to unit length after a product of unit quaternions (|q|^2 =
+// 1 + e with e of a few ulp): one Newton step q (3 - |q|^2) / 2, accurate to
+// O(e^2), without the square root and division of normalize() on the
+// per-sample path. Farther from unit length it normalizes exactly.
+inline void renormalize(Quat& q) {
+    const double n2 = q.squaredNorm();
+    if (std::abs(n2 - 1.0) < 1e-6) q.coeffs() *= 0.5 * (3.0 - n2);
+    else q.normalize();
 }
 
 // Rotation vector of the unit quaternion q (angle in [0, pi]).
