@@ -334,4 +334,20 @@ SimScore score_sim(const SimCase& c, const std::string& config_json) {
     return sc;
 }
 
+const std::vector<Gait>& sweep_gaits() {
+    static const std::vector<Gait> gaits = {{"slow", 0.8, 0.55, 0.36, 0.0},
+                                            {"normal", 1.3, 0.7, 0.28, 0.0},
+                                            {"brisk", 1.9, 0.85, 0.2, 2.0},
+                                            {"jog", 3.0, 1.1, 0.12, 3.0}};
+    return gaits;
+}
+
+SimCase with_gait(SimCase c, const Gait& g) {
+    c.speed_mps = g.speed_mps;
+    c.step_length_m = g.step_length_m;
+    c.stance_fraction = g.stance_fraction;
+    c.heel_strike_g = g.heel_strike_g;
+    return c;
+}
+
 }  // namespace pednav::foot_eval

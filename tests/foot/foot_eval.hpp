@@ -108,4 +108,14 @@ struct SimCase {
 };
 SimScore score_sim(const SimCase& c, const std::string& config_json);
 
+// Gaits of the sweep over gaits, mountings and rates (foot_report sweep and
+// its test): slow, normal, brisk, jog.
+struct Gait {
+    const char* name;
+    double speed_mps, step_length_m, stance_fraction, heel_strike_g;
+};
+const std::vector<Gait>& sweep_gaits();
+// c with the gait's overrides.
+SimCase with_gait(SimCase c, const Gait& g);
+
 }  // namespace pednav::foot_eval

@@ -36,18 +36,10 @@ void print_sim(const std::string& cfg, double rate_hz) {
 
 // Gaits, sensor mountings and rates the pipeline was not tuned on: the
 // corridor loop at every combination, three seeds each, default MEMS errors.
-struct Gait {
-    const char* name;
-    double speed_mps, step_length_m, stance_fraction, heel_strike_g;
-};
 void print_sweep(const std::string& cfg) {
-    static const Gait gaits[] = {{"slow", 0.8, 0.55, 0.36, 0.0},
-                                 {"normal", 1.3, 0.7, 0.28, 0.0},
-                                 {"brisk", 1.9, 0.85, 0.2, 2.0},
-                                 {"jog", 3.0, 1.1, 0.12, 3.0}};
     static const double mounts[][3] = {{0, 0, 0}, {20, -30, 10}, {180, 0, 0}, {90, 0, 0}, {0, -80, 0}, {-150, 40, 120}};
     std::vector<double> all;
-    for (const Gait& g : gaits) {
+    for (const Gait& g : sweep_gaits()) {
         for (double rate : {100.0, 200.0, 256.0, 400.0}) {
             std::vector<double> pct;
             size_t wrong_strides = 0;
@@ -58,11 +50,7 @@ void print_sweep(const std::string& cfg) {
                     c.rate_hz = rate;
                     c.seed = seed;
                     for (int i = 0; i < 3; ++i) c.mounting_rpy_deg[i] = m[i];
-                    c.speed_mps = g.speed_mps;
-                    c.step_length_m = g.step_length_m;
-                    c.stance_fraction = g.stance_fraction;
-                    c.heel_strike_g = g.heel_strike_g;
-                    const SimScore s = score_sim(c, cfg);
+                    const SimScore s = score_sim(with_gait(c, g), cfg);
                     pct.push_back(s.closure_pct);
                     all.push_back(s.closure_pct);
                     if (s.strides != s.true_strides) ++wrong_strides;

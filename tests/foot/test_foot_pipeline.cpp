@@ -45,7 +45,10 @@ TEST_CASE("issue 3: koroglu-foot-gcp stride count equals footprints, error at fo
         CAPTURE(s.err_m.final);
         CHECK(s.strides == s.footprints);
         CHECK(s.mean_pct < 1.5);
-        CHECK(std::abs(s.est_path_m / s.path_m - 1.0) < 0.05);  // stride-length scale
+        // Stride-length scale: the rolling-foot ZUPT keeps the footprint path
+        // within 2 % of the measured one (walk 35, with 170 ms gyro clipping
+        // in its fast strides: 5 %); the paper's plain ZUPT is 2.7 % short on 44.
+        CHECK(std::abs(s.est_path_m / s.path_m - 1.0) < (n == 35 ? 0.05 : 0.02));
     }
 }
 
@@ -96,22 +99,18 @@ TEST_CASE("gaits, mountings and rates the preset was not tuned on: every stride 
     // landings), the sensor upside down or standing on its end, at 100 and
     // 256 Hz. `foot_report shoe '{}' sweep` prints the whole grid (288 runs:
     // median 0.19 %, largest 1.05 %, from the gyro scale-factor errors).
-    struct Gait {
-        double speed_mps, step_length_m, stance_fraction, heel_strike_g;
-    };
-    for (const Gait g : {Gait{0.8, 0.55, 0.36, 0.0}, Gait{3.0, 1.1, 0.12, 3.0}}) {
+    const Gait& slow = sweep_gaits().front();
+    const Gait& jog = sweep_gaits().back();
+    for (const Gait& g : {slow, jog}) {
         for (const std::array<double, 2> roll_pitch : {std::array<double, 2>{180, 0}, std::array<double, 2>{0, -80}}) {
             for (double rate : {100.0, 256.0}) {
                 SimCase c;
                 c.rate_hz = rate;
                 c.mounting_rpy_deg[0] = roll_pitch[0];
                 c.mounting_rpy_deg[1] = roll_pitch[1];
-                c.speed_mps = g.speed_mps;
-                c.step_length_m = g.step_length_m;
-                c.stance_fraction = g.stance_fraction;
-                c.heel_strike_g = g.heel_strike_g;
+                c = with_gait(c, g);
                 const SimScore s = score_sim(c, preset());
-                CAPTURE(g.speed_mps);
+                CAPTURE(g.name);
                 CAPTURE(roll_pitch[1]);
                 CAPTURE(rate);
                 CAPTURE(s.closure_pct);
@@ -392,11 +391,18 @@ TEST_CASE("the dense textbook EKF plugin gives the same track as the hand-writte
     CAPTURE(max_cov_rel);
     CHECK(max_diff_m < 1e-9);  // measured: 7e-14 m
     CHECK(max_cov_rel < 1e-9);
-    SimCase c;
-    c.route = "stairs";
-    const SimScore fast_sim = score_sim(c, preset());
-    const SimScore dense_sim = score_sim(c, foot_config(dense));
-    CHECK(fast_sim.strides == dense_sim.strides);
-    CHECK(std::abs(fast_sim.closure_m - dense_sim.closure_m) < 1e-9);
-    CHECK(std::abs(fast_sim.mean_err_z_m - dense_sim.mean_err_z_m) < 1e-9);
+    // Both covariance forms: Joseph (the preset) and P - K H P.
+    for (bool joseph : {true, false}) {
+        nlohmann::json form = ekf_patch({{"joseph_form", joseph}});
+        nlohmann::json dense_form = form;
+        dense_form.merge_patch(dense);
+        SimCase c;
+        c.route = "stairs";
+        const SimScore fast_sim = score_sim(c, foot_config(form));
+        const SimScore dense_sim = score_sim(c, foot_config(dense_form));
+        CAPTURE(joseph);
+        CHECK(fast_sim.strides == dense_sim.strides);
+        CHECK(std::abs(fast_sim.closure_m - dense_sim.closure_m) < 1e-9);
+        CHECK(std::abs(fast_sim.mean_err_z_m - dense_sim.mean_err_z_m) < 1e-9);
+    }
 }

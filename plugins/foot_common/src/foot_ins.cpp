@@ -110,6 +110,9 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
             // rolls on) is left to the noise, which grows with the rate.
             // The measurement's small dependence on the attitude and gyro
             // bias errors (h |w| times them) is neglected: H selects velocity.
+            // Below zaru_max_radps the ZARU takes the same rate for gyro bias;
+            // the rolling velocity there is at most h zaru_max_radps (5 mm/s
+            // with the preset), under zupt_sd_mps.
             const double sd = cfg_.zupt_sd_mps + cfg_.zupt_lever_m * rate;
             const Vec3 w_enu = R * w_est;
             const double h = cfg_.sensor_height_m;
