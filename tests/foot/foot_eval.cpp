@@ -272,11 +272,11 @@ SimScore score_sim(const SimCase& c, const std::string& config_json) {
                       &m.gyro_noise_radps_per_rthz, &m.gyro_bias_radps, &m.gyro_bias_rw_radps_per_rts, &m.gyro_scale})
         *v *= c.error_scale;
     m.accel_bias_rw_mps2_per_rts *= c.accel_bias_walk_scale;
-    so.heel_strike_g = c.heel_strike_g;
+    so.heel_strike_g = c.gait.heel_strike_g;
     sim::Route route = sim::builtin_route(c.route);
-    if (c.speed_mps > 0) route.speed_mps = c.speed_mps;
-    if (c.step_length_m > 0) route.step_length_m = c.step_length_m;
-    if (c.stance_fraction > 0) route.stance_fraction = c.stance_fraction;
+    if (c.gait.speed_mps > 0) route.speed_mps = c.gait.speed_mps;
+    if (c.gait.step_length_m > 0) route.step_length_m = c.gait.step_length_m;
+    if (c.gait.stance_fraction > 0) route.stance_fraction = c.gait.stance_fraction;
     const sim::SimOutput out = sim::simulate(route, so);
     auto doc = nlohmann::json::parse(config_json);
     doc["imu_rate_hz"] = c.rate_hz;
@@ -340,14 +340,6 @@ const std::vector<Gait>& sweep_gaits() {
                                             {"brisk", 1.9, 0.85, 0.2, 2.0},
                                             {"jog", 3.0, 1.1, 0.12, 3.0}};
     return gaits;
-}
-
-SimCase with_gait(SimCase c, const Gait& g) {
-    c.speed_mps = g.speed_mps;
-    c.step_length_m = g.step_length_m;
-    c.stance_fraction = g.stance_fraction;
-    c.heel_strike_g = g.heel_strike_g;
-    return c;
 }
 
 }  // namespace pednav::foot_eval

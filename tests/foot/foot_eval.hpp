@@ -91,6 +91,13 @@ struct SimScore {
     size_t strides = 0, true_strides = 0;
     size_t level = 0, stairs = 0;  // strides by class
 };
+// A gait on level floors: speed, step length (half a stride), the share of
+// a stride the foot is flat and still, and the landing transient in g (0:
+// none). Zeros keep the route's own values.
+struct Gait {
+    const char* name;
+    double speed_mps, step_length_m, stance_fraction, heel_strike_g;
+};
 struct SimCase {
     std::string route = "corridor_loop";
     double rate_hz = 200.0;
@@ -99,23 +106,12 @@ struct SimCase {
     double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};
     double error_scale = 1.0;  // multiplies every IMU error of the simulator's default model
     double accel_bias_walk_scale = 1.0;  // and this the accelerometer bias random walk once more
-    // Gait overrides (0: the route's own): level-floor speed, step length
-    // (half a stride) and the share of a stride the foot is flat and still.
-    double speed_mps = 0.0;
-    double step_length_m = 0.0;
-    double stance_fraction = 0.0;
-    double heel_strike_g = 0.0;  // landing transient on level floors (0: none)
+    Gait gait{"route", 0.0, 0.0, 0.0, 0.0};
 };
 SimScore score_sim(const SimCase& c, const std::string& config_json);
 
 // Gaits of the sweep over gaits, mountings and rates (foot_report sweep and
 // its test): slow, normal, brisk, jog.
-struct Gait {
-    const char* name;
-    double speed_mps, step_length_m, stance_fraction, heel_strike_g;
-};
 const std::vector<Gait>& sweep_gaits();
-// c with the gait's overrides.
-SimCase with_gait(SimCase c, const Gait& g);
 
 }  // namespace pednav::foot_eval

@@ -50,7 +50,8 @@ void print_sweep(const std::string& cfg) {
                     c.rate_hz = rate;
                     c.seed = seed;
                     for (int i = 0; i < 3; ++i) c.mounting_rpy_deg[i] = m[i];
-                    const SimScore s = score_sim(with_gait(c, g), cfg);
+                    c.gait = g;
+                    const SimScore s = score_sim(c, cfg);
                     pct.push_back(s.closure_pct);
                     all.push_back(s.closure_pct);
                     if (s.strides != s.true_strides) ++wrong_strides;

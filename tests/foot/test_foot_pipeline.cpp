@@ -22,6 +22,18 @@ const std::string& preset() {
     return cfg;
 }
 std::string with_ekf(const nlohmann::json& params) { return foot_config(ekf_patch(params)); }
+
+// The simulated corridor loop through the preset: every stride found and
+// classed level, and the loop closed within max_pct of the distance.
+void check_loop_closes(const SimCase& c, double max_pct) {
+    const SimScore s = score_sim(c, preset());
+    CAPTURE(c.rate_hz);
+    CAPTURE(s.closure_m);
+    CAPTURE(s.closure_pct);
+    CHECK(s.strides == s.true_strides);
+    CHECK(s.level == s.strides);
+    CHECK(s.closure_pct < max_pct);
+}
 }  // namespace
 
 TEST_CASE("issue 3: xio-gait-ngimu loops end near their start (causal)") {
@@ -84,15 +96,9 @@ TEST_CASE("issue 3: simulated 3 x 40 m corridor loop closes within 0.3 %") {
         c.mounting_rpy_deg[0] = 20;  // tilted on the shoe
         c.mounting_rpy_deg[1] = -30;
         c.mounting_rpy_deg[2] = 10;
-        const SimScore s = score_sim(c, preset());
-        CAPTURE(rate);
-        CAPTURE(s.closure_m);
-        CHECK(s.strides == s.true_strides);
-        CHECK(s.level == s.strides);
-        CHECK(s.closure_pct < 0.3);
+        check_loop_closes(c, 0.3);
     }
 }
-
 
 TEST_CASE("gaits, mountings and rates the preset was not tuned on: every stride found, the loop closes") {
     // A slow walk and a jog (3 m/s, the foot flat for 12 % of a stride, 3 g
@@ -108,19 +114,15 @@ TEST_CASE("gaits, mountings and rates the preset was not tuned on: every stride 
                 c.rate_hz = rate;
                 c.mounting_rpy_deg[0] = roll_pitch[0];
                 c.mounting_rpy_deg[1] = roll_pitch[1];
-                c = with_gait(c, g);
-                const SimScore s = score_sim(c, preset());
+                c.gait = g;
                 CAPTURE(g.name);
                 CAPTURE(roll_pitch[1]);
-                CAPTURE(rate);
-                CAPTURE(s.closure_pct);
-                CHECK(s.strides == s.true_strides);
-                CHECK(s.level == s.strides);
-                CHECK(s.closure_pct < 1.5);
+                check_loop_closes(c, 1.5);
             }
         }
     }
 }
+
 TEST_CASE("issue 3: clipped gyro: the xio loops clipped at 500 deg/s stay on their unclipped footprints") {
     // The NGIMU reads up to 2000 deg/s; clipped as a +-500 deg/s sensor would
     // read it (200-300 samples per loop), the swings lose rotation. With the

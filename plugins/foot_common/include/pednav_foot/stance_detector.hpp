@@ -132,6 +132,17 @@ private:
         double am;  // |a| - kAccelNormOffset
     };
 
+    // Moves a stage's window [lo, hi) over its ring (times tr, index mask,
+    // n samples pushed) to the samples within h of t, the time of centre c:
+    // add(i) takes in each sample up to t + h, remove(i) drops each sample
+    // before t - h (never past the centre). The three stages share it.
+    template <class Add, class Remove>
+    static void slide(const int64_t* tr, uint64_t mask, uint64_t n, uint64_t c, int64_t t, int64_t h, uint64_t& hi,
+                      uint64_t& lo, Add&& add, Remove&& remove) {
+        while (hi < n && tr[hi & mask] <= t + h) add(hi++);
+        while (lo < c && tr[lo & mask] < t - h) remove(lo++);
+    }
+
     // ---- stage 1: running sums over the centred window -------------------
     struct ShoeSums {
         double a[3] = {0, 0, 0};
@@ -211,17 +222,10 @@ private:
         const int64_t* tr = t1_.get();
         const uint64_t mask = mask1_, n = n1_, c = c1_;
         const int64_t t = tr[c & mask];
-        const int64_t t_hi = t + h1_, t_lo = t - h1_;
         uint64_t hi = hi1_, lo = lo1_;
         Sums<Shoe> x = sums<Shoe>();
-        while (hi < n && tr[hi & mask] <= t_hi) {
-            x.add(ring[hi & mask]);
-            ++hi;
-        }
-        while (lo < c && tr[lo & mask] < t_lo) {
-            x.remove(ring[lo & mask]);
-            ++lo;
-        }
+        slide(tr, mask, n, c, t, h1_, hi, lo, [&](uint64_t i) { x.add(ring[i & mask]); },
+              [&](uint64_t i) { x.remove(ring[i & mask]); });
         hi1_ = hi;
         lo1_ = lo;
         c1_ = c + 1;
@@ -255,19 +259,17 @@ private:
         uint64_t* dq = dq_.get();
         const uint64_t c = c2_, n = n2_, mask = maskd_, qmask = dq_mask_;
         const int64_t t = tr[c & mask];
-        const int64_t t_hi = t + h2_, t_lo = t - h2_;
         uint64_t hi = hi2_, lo = lo2_, head = dq_head_, tail = dq_tail_;
-        while (hi < n && tr[hi & mask] <= t_hi) {
-            const double x = st[hi & mask];
-            while (tail > head && st[dq[(tail - 1) & qmask] & mask] >= x) --tail;
-            dq[tail & qmask] = hi;
-            ++tail;
-            ++hi;
-        }
-        while (lo < c && tr[lo & mask] < t_lo) {
-            if (tail > head && dq[head & qmask] == lo) ++head;
-            ++lo;
-        }
+        slide(
+            tr, mask, n, c, t, h2_, hi, lo,
+            [&](uint64_t i) {
+                const double x = st[i & mask];
+                while (tail > head && st[dq[(tail - 1) & qmask] & mask] >= x) --tail;
+                dq[tail++ & qmask] = i;
+            },
+            [&](uint64_t i) {
+                if (tail > head && dq[head & qmask] == i) ++head;
+            });
         hi2_ = hi;
         lo2_ = lo;
         dq_head_ = head;
@@ -320,17 +322,10 @@ private:
         const bool* sn = sn_.get();
         const uint64_t c = c3_, n = n3_, mask = maskd_;
         const int64_t t = tr[c & mask];
-        const int64_t t_hi = t + h3_, t_lo = t - h3_;
         uint64_t hi = hi3_, lo = lo3_;
         int64_t ones = ones_;
-        while (hi < n && tr[hi & mask] <= t_hi) {
-            ones += sn[hi & mask];
-            ++hi;
-        }
-        while (lo < c && tr[lo & mask] < t_lo) {
-            ones -= sn[lo & mask];
-            ++lo;
-        }
+        slide(tr, mask, n, c, t, h3_, hi, lo, [&](uint64_t i) { ones += sn[i & mask]; },
+              [&](uint64_t i) { ones -= sn[i & mask]; });
         hi3_ = hi;
         lo3_ = lo;
         ones_ = ones;
