@@ -228,6 +228,20 @@ TEST_CASE("Xsens: a pressure column filled on every 10th row; the other rows kee
     CHECK(log.issues.empty());
 }
 
+TEST_CASE("Xsens: a tab at the end of every row, with or without one after the header") {
+    const std::string dir = temp_dir();
+    for (const char* header_end : {"\t\n", "\n"}) {
+        std::string text = std::string("Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z") +
+                           header_end;
+        for (int c = 0; c < 100; ++c) text += std::to_string(c) + "\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\t\n";
+        const SensorLog log = read_sensor_file(write_file(dir, "trailing_tab.txt", text));
+        CAPTURE(header_end);
+        CHECK(log.format == "xsens-mtw-tsv");
+        CHECK(log.imu.size() == 100);
+        CHECK(log.issues.empty());
+    }
+}
+
 TEST_CASE("x-io CSV: deg/s and g converted, a repeated row dropped") {
     const std::string dir = temp_dir();
     const std::string text =

@@ -84,9 +84,12 @@ void read_table(const TextFile& file, const TableSpec& spec, LogBuilder& builder
         const size_t line_no = index + 1;
         const std::string_view line = trim(file.lines[index]);
         if (line.empty() || is_comment(spec, line)) continue;
-        // Split the untrimmed line: a trailing empty cell of a tab-separated
-        // row is a field (split_into trims each field).
-        split_into(spec.delim == ' ' ? line : std::string_view(file.lines[index]), spec.delim, fields);
+        // Split the untrimmed line: the trailing empty cell of a tab-separated
+        // row is a field (split_into trims each field). One delimiter more
+        // than the header has, ending the row, closes it instead: headers
+        // are read trimmed, so a trailing tab never makes a column there.
+        split_into(file.lines[index], spec.delim, fields);
+        if (fields.size() == spec.column_count + 1 && fields.back().empty()) fields.pop_back();
         if (fields.size() != spec.column_count) {
             char text[160];
             std::snprintf(text, sizeof text, "%s: %zu fields, the header has %zu",
