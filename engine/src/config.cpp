@@ -56,9 +56,15 @@ EngineConfig parse_config(const std::string& text) {
     if (!doc.is_object()) fail("", "config must be a JSON object");
     check_keys(doc, "", {"format", "mount", "imu_rate_hz", "pipelines", "description", "input"});
     // "input" configures the file readers of the tools (format, column map);
-    // the engine itself does not read files.
-    if (auto in = doc.find("input"); in != doc.end() && !in->is_object())
-        fail("/input", "\"input\" must be an object (reader settings: format, column_map)");
+    // the engine itself does not read files, but checks it like every key.
+    if (auto in = doc.find("input"); in != doc.end()) {
+        if (!in->is_object()) fail("/input", "\"input\" must be an object (reader settings: format, column_map)");
+        check_keys(*in, "/input", {"format", "column_map"});
+        if (auto f = in->find("format"); f != in->end() && !f->is_string())
+            fail("/input/format", "\"format\" must be a reader name (pednav inspect --formats)");
+        if (auto m = in->find("column_map"); m != in->end() && !m->is_object())
+            fail("/input/column_map", "\"column_map\" must be an object (docs/formats.md)");
+    }
     auto format = doc.find("format");
     if (format == doc.end() || !format->is_string() || format->get<std::string>() != "pednav-config/1")
         fail("/format", "\"format\" must be \"pednav-config/1\"");

@@ -43,16 +43,16 @@ std::string error_text(const pn_error_t& err, pn_status_t st) {
     return s;
 }
 
-}  // namespace
+using EnginePtr = std::unique_ptr<pn_engine_t, EngineDeleter>;
 
-ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_record_header_t*>& records) {
-    ReplayResult result;
+// The engine of `options`, or null with `error` set.
+EnginePtr create_engine(const ReplayOptions& options, std::string& error) {
     std::string config = options.config_json;
     if (!options.mount.empty()) {
         auto doc = nlohmann::json::parse(config, nullptr, false);
         if (doc.is_discarded()) {
-            result.error = "config is not valid JSON";
-            return result;
+            error = "config is not valid JSON";
+            return nullptr;
         }
         doc["mount"] = options.mount;
         config = doc.dump();
@@ -68,18 +68,34 @@ ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_rec
     pn_error_t err{};
     err.struct_size = sizeof err;
     pn_engine_t* raw = nullptr;
-    pn_status_t st = pn_engine_create(&info, &raw, &err);
+    const pn_status_t st = pn_engine_create(&info, &raw, &err);
     if (PN_FAILED(st)) {
-        result.error = error_text(err, st);
-        return result;
+        error = error_text(err, st);
+        return nullptr;
     }
-    std::unique_ptr<pn_engine_t, EngineDeleter> engine(raw);
+    return EnginePtr(raw);
+}
+
+}  // namespace
+
+std::string config_problem(const ReplayOptions& options) {
+    std::string error;
+    create_engine(options, error);
+    return error;
+}
+
+ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_record_header_t*>& records) {
+    ReplayResult result;
+    const EnginePtr engine = create_engine(options, result.error);
+    if (!engine) return result;
+    pn_error_t err{};
+    err.struct_size = sizeof err;
     uint64_t mask = PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_STEP);
     if (options.keep_attitudes) mask |= PN_REC_MASK(PN_REC_ATTITUDE);
     if (options.keep_gait_phases) mask |= PN_REC_MASK(PN_REC_GAIT_PHASE);
     pn_engine_set_output_mask(engine.get(), mask);
     result.latency_ns = pn_engine_latency_ns(engine.get());
-    st = pn_engine_set_start(engine.get(), options.start_enu_m, options.heading_deg, &err);
+    pn_status_t st = pn_engine_set_start(engine.get(), options.start_enu_m, options.heading_deg, &err);
     if (PN_FAILED(st) && st != PN_E_UNSUPPORTED) result.warnings.push_back("start not applied: " + error_text(err, st));
 
     const size_t total = records.size();

@@ -50,6 +50,15 @@ TEST_CASE("unknown keys fail with PN_E_INVALID_CONFIG and the key's JSON pointer
         CHECK(r.status == PN_E_INVALID_CONFIG);
         CHECK(r.where == "/pipelines/foot/step_detector/plugn");
     }
+    SUBCASE("reader settings (\"input\"): a key and a type") {
+        doc["input"] = {{"colum_map", nlohmann::json::object()}};
+        auto r = create_fails(doc.dump());
+        CHECK(r.status == PN_E_INVALID_CONFIG);
+        CHECK(r.where == "/input/colum_map");
+        doc["input"] = {{"format", 3}};
+        r = create_fails(doc.dump());
+        CHECK(r.where == "/input/format");
+    }
     SUBCASE("plugin params (bad_params): the plugin rejects a key it does not know") {
         doc["pipelines"]["foot"]["step_detector"]["params"] = {{"every_nn", 3}};
         const auto r = create_fails(doc.dump());

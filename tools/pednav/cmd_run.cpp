@@ -74,24 +74,20 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     options.config_json = cli::load_config(config_path, mount.empty() ? "foot" : mount);
     options.mount = mount;
 
-    // Reader settings: the config's "input" object ({"format": ..., "column_map": {...}}),
-    // overridden by --format and --column-map.
+    // The config is checked (and its plugins created) before the input is read.
+    if (const std::string problem = config_problem(options); !problem.empty())
+        throw std::runtime_error("config: " + problem);
+
+    // Reader settings: the config's "input" object ({"format": ..., "column_map": {...}},
+    // checked by the engine with the rest of the config), overridden by --format and --column-map.
     io::ReadOptions ro;
     nlohmann::json column_map;
-    const nlohmann::json config_doc = nlohmann::json::parse(options.config_json, nullptr, false);
-    if (config_doc.is_object() && config_doc.contains("input") && config_doc["input"].is_object()) {
-        const auto& in = config_doc["input"];
-        for (auto it = in.begin(); it != in.end(); ++it)
-            if (it.key() != "format" && it.key() != "column_map")
-                throw std::runtime_error("config /input/" + it.key() + ": unknown key (format, column_map)");
-        if (in.contains("format")) {
-            if (!in["format"].is_string()) throw std::runtime_error("config /input/format must be a format name");
-            ro.format = in["format"].get<std::string>();
-        }
-        if (in.contains("column_map")) {
-            column_map = in["column_map"];
+    const nlohmann::json config_doc = nlohmann::json::parse(options.config_json);
+    if (const auto in = config_doc.find("input"); in != config_doc.end()) {
+        ro.format = in->value("format", std::string());
+        if (in->contains("column_map")) {
+            column_map = (*in)["column_map"];
             ro.column_map = &column_map;
-            if (!in.contains("format")) ro.format = "column-map";
         }
     }
     if (format != "auto") ro.format = format;

@@ -41,4 +41,8 @@ struct ReplayResult {
 // `records` must be in non-decreasing time order (io::merged_records gives that).
 ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_record_header_t*>& records);
 
+// Builds the engine for `options` (config checked, plugins loaded and
+// created) and tears it down: what replay() would stop on, or "" when none.
+std::string config_problem(const ReplayOptions& options);
+
 }  // namespace pednav
