@@ -128,24 +128,27 @@ TEST_CASE("simulated truth: read back from pednav sim's files, scores a perfect 
     CHECK(m.loop_closure_m < 1e-5);
     CHECK(m.heading_error_deg.max < 1e-3);
     CHECK(m.truth_distance_m == doctest::Approx(out.distance_m).epsilon(0.02));
-    // pednav report builds the same truth from the samples in memory.
-    std::vector<TruthPoint> rows;
-    for (const TruthSample& s : out.truth) {
-        TruthPoint p;
-        p.t_s = s.t_s;
-        p.x_m = s.pos_enu_m[0];
-        p.y_m = s.pos_enu_m[1];
-        p.z_m = s.pos_enu_m[2];
-        p.floor = s.floor;
-        p.has_floor = true;
-        p.heading_deg = s.heading_deg;
-        rows.push_back(p);
-    }
-    const Truth direct = sim_truth(rows, out.step_times_s);
+    // pednav report builds the truth from the walk in memory: the same points.
+    const Truth direct = sim_truth(out, route);
     REQUIRE(direct.points.size() == t.points.size());
-    CHECK(direct.points.back().t_s == doctest::Approx(out.truth.back().t_s));
+    for (size_t i = 0; i < t.points.size(); ++i) {
+        const TruthPoint &a = direct.points[i], &b = t.points[i];
+        CAPTURE(i);
+        CHECK(a.t_s == doctest::Approx(b.t_s).epsilon(1e-9));
+        CHECK(std::fabs(a.x_m - b.x_m) < 1e-5);
+        CHECK(std::fabs(a.y_m - b.y_m) < 1e-5);
+        CHECK(std::fabs(a.z_m - b.z_m) < 1e-5);
+        CHECK(std::fabs(a.heading_deg - b.heading_deg) < 1e-3);
+        CHECK(a.floor == b.floor);
+    }
     CHECK(t.points.back().t_s == doctest::Approx(out.truth.back().t_s));
-    CHECK(direct.step_count == t.step_count);
+    REQUIRE(direct.step_times_s.size() == t.step_times_s.size());
+    // truth.csv flags the first sample at or after each step: within one sample.
+    for (size_t i = 0; i < t.step_times_s.size(); ++i) {
+        CHECK(t.step_times_s[i] >= direct.step_times_s[i] - 1e-9);
+        CHECK(t.step_times_s[i] - direct.step_times_s[i] < 1.0 / out.rate_hz + 1e-9);
+    }
+    CHECK(direct.walls.size() == t.walls.size());
     CHECK(direct.closed_loop == t.closed_loop);
     CHECK(direct.loop_length_m == doctest::Approx(t.loop_length_m).epsilon(1e-6));
 }

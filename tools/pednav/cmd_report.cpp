@@ -115,26 +115,6 @@ std::vector<Walk> recording_walks(const std::string& data, Skip skip) {
     return w;
 }
 
-eval::Truth truth_of(const sim::SimOutput& out, const sim::Route& route) {
-    std::vector<eval::TruthPoint> rows;
-    rows.reserve(out.truth.size());
-    for (const sim::TruthSample& s : out.truth) {
-        eval::TruthPoint p;
-        p.t_s = s.t_s;
-        p.x_m = s.pos_enu_m[0];
-        p.y_m = s.pos_enu_m[1];
-        p.z_m = s.pos_enu_m[2];
-        p.floor = s.floor;
-        p.has_floor = true;
-        p.heading_deg = s.heading_deg;
-        rows.push_back(p);
-    }
-    eval::Truth t = eval::sim_truth(rows, out.step_times_s);
-    t.name = route.name;
-    for (const sim::Wall& w : route.walls) t.walls.push_back({w.floor, w.points_enu_m});
-    return t;
-}
-
 Result run_walk(const Walk& walk, const std::string& config, const std::vector<std::string>& plugin_dirs,
                 uint64_t seed) {
     Result r;
@@ -153,7 +133,7 @@ Result run_walk(const Walk& walk, const std::string& config, const std::vector<s
         so.seed = seed;
         simulated = sim::simulate(route, so);
         records = simulated.records();
-        r.walk.truth = truth_of(simulated, route);
+        r.walk.truth = eval::sim_truth(simulated, route);
         // The walker is told where it starts and which way it faces, as in an app.
         o.heading_deg = simulated.truth.front().heading_deg;
     } else {

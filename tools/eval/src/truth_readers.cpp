@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 #include <pednav_io/geo.hpp>
+#include <pednav_sim/simulate.hpp>
 
 #include "fields.hpp"
 
@@ -109,6 +110,26 @@ Truth sim_truth(const std::vector<TruthPoint>& rows, std::vector<double> step_ti
         t.loop_end_s = last.t_s;
         t.loop_length_m = dist;
     }
+    return t;
+}
+
+Truth sim_truth(const sim::SimOutput& out, const sim::Route& route, double period_s) {
+    std::vector<TruthPoint> rows;
+    rows.reserve(out.truth.size());
+    for (const sim::TruthSample& s : out.truth) {
+        TruthPoint p;
+        p.t_s = s.t_s;
+        p.x_m = s.pos_enu_m[0];
+        p.y_m = s.pos_enu_m[1];
+        p.z_m = s.pos_enu_m[2];
+        p.floor = s.floor;
+        p.has_floor = true;
+        p.heading_deg = s.heading_deg;
+        rows.push_back(p);
+    }
+    Truth t = sim_truth(rows, out.step_times_s, period_s);
+    t.name = route.name;
+    for (const sim::Wall& w : route.walls) t.walls.push_back({w.floor, w.points_enu_m});
     return t;
 }
 

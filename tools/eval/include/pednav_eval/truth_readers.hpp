@@ -8,6 +8,11 @@
 
 #include <pednav_eval/truth.hpp>
 
+namespace pednav::sim {
+struct SimOutput;
+struct Route;
+}  // namespace pednav::sim
+
 namespace pednav::eval {
 
 // The truth of a simulated walk from every sample of it (`rows`, in time order:
@@ -17,6 +22,10 @@ namespace pednav::eval {
 // the first, horizontally and in height. No walls. Throws std::runtime_error
 // when `rows` is empty.
 Truth sim_truth(const std::vector<TruthPoint>& rows, std::vector<double> step_times_s, double period_s = 0.1);
+
+// The same from a simulated walk in memory (pednav report): the truth that
+// read_sim_truth() reads back from write_outputs(out, route), walls included.
+Truth sim_truth(const sim::SimOutput& out, const sim::Route& route, double period_s = 0.1);
 
 // pednav sim truth.csv through sim_truth (a step event on each row with step
 // 1), with the walls of route.json when it sits next to truth.csv.
