@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <pednav_io/text_fields.hpp>
+
 #ifndef PEDNAV_PLUGIN_DIR_FROM_BIN
 #define PEDNAV_PLUGIN_DIR_FROM_BIN "../lib/pednav/plugins"
 #endif
@@ -40,28 +42,30 @@ std::string read_text_file(const std::string& path) {
 }
 
 std::vector<double> parse_numbers(const std::string& text, size_t count, const std::string& option) {
+    // The numbers of the readers (io::parse_number): decimal, finite.
     const std::string expected = count == 1 ? "a number" : std::to_string(count) + " comma-separated numbers";
-    std::vector<double> out;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !std::isfinite(v))
+    const std::vector<std::string_view> items = io::split(text, ',');
+    std::vector<double> out(items.size());
+    for (size_t i = 0; i < items.size(); ++i)
+        if (io::parse_number(items[i], &out[i]) != io::NumberStatus::ok)
             throw UsageError(option + " expects " + expected + ", got \"" + text + "\"");
-        out.push_back(v);
-    }
     if (out.size() != count) throw UsageError(option + " expects " + expected + ", got \"" + text + "\"");
     return out;
 }
 
 uint64_t parse_count(const std::string& text, const std::string& option) {
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-    if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE)
-        throw UsageError(option + " expects a non-negative integer, got \"" + text + "\"");
-    return static_cast<uint64_t>(v);
+    const std::string_view digits = io::trim(text);
+    uint64_t v = 0;
+    bool ok = !digits.empty();
+    for (const char c : digits) {
+        if (c < '0' || c > '9' || v > (UINT64_MAX - (c - '0')) / 10) {
+            ok = false;
+            break;
+        }
+        v = 10 * v + static_cast<uint64_t>(c - '0');
+    }
+    if (!ok) throw UsageError(option + " expects a non-negative integer, got \"" + text + "\"");
+    return v;
 }
 
 }  // namespace pednav::cli

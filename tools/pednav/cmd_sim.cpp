@@ -1,5 +1,6 @@
 #include "cmd_sim.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -59,14 +60,8 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
             else if (a == "--heel-strike-g")
                 options.heel_strike_g = pednav::cli::parse_numbers(value(), 1, a)[0];
             else if (a == "--mounting") {
-                std::stringstream ss(value());
-                std::string part;
-                int n = 0;
-                while (std::getline(ss, part, ',')) {
-                    if (n >= 3) throw pednav::cli::UsageError("--mounting needs three numbers");
-                    options.mounting_rpy_deg[n++] = pednav::cli::parse_numbers(part, 1, a)[0];
-                }
-                if (n != 3) throw pednav::cli::UsageError("--mounting needs three numbers");
+                const std::vector<double> rpy = pednav::cli::parse_numbers(value(), 3, a);
+                std::copy(rpy.begin(), rpy.end(), options.mounting_rpy_deg);
             } else if (a == "--list") {
                 for (const std::string& name : builtin_route_names())
                     std::printf("%-16s %s\n", name.c_str(), builtin_route(name).description.c_str());
