@@ -24,7 +24,7 @@ public:
     }
 
     void push(const pn_record_header_t* r) {
-        if (end_ - begin_ == slots_.size()) grow();
+        if (end_ - begin_ > mask_) grow();
         Slot& s = slots_[end_ & mask_];
         std::memcpy(s.bytes, r, r->struct_size);
         ++end_;
@@ -45,15 +45,15 @@ private:
         unsigned char bytes[PN_RECORD_MAX_SIZE];
     };
     void grow() {
-        std::vector<Slot> bigger(slots_.size() * 2);
-        for (Seq s = begin_; s < end_; ++s)
-            bigger[s & (bigger.size() - 1)] = slots_[s & (slots_.size() - 1)];
+        const size_t bigger_mask = 2 * mask_ + 1;
+        std::vector<Slot> bigger(bigger_mask + 1);
+        for (Seq s = begin_; s < end_; ++s) bigger[s & bigger_mask] = slots_[s & mask_];
         slots_.swap(bigger);
-        mask_ = slots_.size() - 1;
+        mask_ = bigger_mask;
     }
 
     std::vector<Slot> slots_;
-    size_t mask_ = 0;  // slots_.size() - 1 (a power of two)
+    size_t mask_ = 0;  // slots_.size() - 1 (the size is a power of two); the one index rule
     Seq begin_ = 0, end_ = 0;
 };
 

@@ -11,12 +11,14 @@
 #include <pednav_eval/track.hpp>
 #include <pednav_io/writers.hpp>
 
+#include "test_dir.hpp"
+
 using namespace pednav::eval;
 
 namespace {
 
 std::string temp_path(const char* name) {
-    return (std::filesystem::temp_directory_path() / name).string();
+    return pednav::eval_test::test_dir() + "/" + name;
 }
 
 // 10 s east at 1 m/s, 10 Hz, heading 90 deg, floor known after the first 3 samples.

@@ -10,6 +10,8 @@
 #include <pednav_eval/truth_readers.hpp>
 #include <pednav_sim/simulate.hpp>
 
+#include "test_dir.hpp"
+
 using namespace pednav::eval;
 
 namespace {
@@ -102,7 +104,7 @@ TEST_CASE("simulated truth: read back from pednav sim's files, scores a perfect 
     o.sensor_errors = false;
     const Route route = builtin_route("stairs");
     const SimOutput out = simulate(route, o);
-    const std::string dir = (std::filesystem::temp_directory_path() / "pednav_eval_test_sim_stairs").string();
+    const std::string dir = pednav::eval_test::test_dir() + "/sim_stairs";
     write_outputs(out, route, dir);
     const Truth t = read_truth(dir);
     CHECK(t.kind == TruthKind::simulated);
