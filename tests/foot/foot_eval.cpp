@@ -272,6 +272,7 @@ SimScore score_sim(const SimCase& c, const std::string& config_json) {
                       &m.gyro_noise_radps_per_rthz, &m.gyro_bias_radps, &m.gyro_bias_rw_radps_per_rts, &m.gyro_scale})
         *v *= c.error_scale;
     m.accel_bias_rw_mps2_per_rts *= c.accel_bias_walk_scale;
+    if (!c.gyro_scale_errors) m.gyro_scale = 0.0;
     so.heel_strike_g = c.gait.heel_strike_g;
     sim::Route route = sim::builtin_route(c.route);
     if (c.gait.speed_mps > 0) route.speed_mps = c.gait.speed_mps;

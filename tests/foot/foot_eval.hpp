@@ -106,6 +106,7 @@ struct SimCase {
     double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};
     double error_scale = 1.0;  // multiplies every IMU error of the simulator's default model
     double accel_bias_walk_scale = 1.0;  // and this the accelerometer bias random walk once more
+    bool gyro_scale_errors = true;       // false: the gyro has no scale-factor error
     Gait gait{"route", 0.0, 0.0, 0.0, 0.0};
 };
 SimScore score_sim(const SimCase& c, const std::string& config_json);
