@@ -83,16 +83,23 @@ double json_number(const nlohmann::json& j, const std::string& key, const std::s
     return j[key].get<double>();
 }
 
+// Horizontal length of the polyline through the points.
+double path_length_m(const std::vector<TruthPoint>& points) {
+    double d = 0.0;
+    for (size_t i = 1; i < points.size(); ++i)
+        d += std::hypot(points[i].x_m - points[i - 1].x_m, points[i].y_m - points[i - 1].y_m);
+    return d;
+}
+
 }  // namespace
 
 Truth sim_truth(const std::vector<TruthPoint>& rows, std::vector<double> step_times_s, double period_s) {
     if (rows.empty()) throw std::runtime_error("simulated truth: no rows");
     Truth t;
     t.kind = TruthKind::simulated;
-    double next_t = -1e300, dist = 0.0;
-    for (size_t i = 0; i < rows.size(); ++i) {
-        const TruthPoint& p = rows[i];
-        if (i > 0) dist += std::hypot(p.x_m - rows[i - 1].x_m, p.y_m - rows[i - 1].y_m);
+    double next_t = -1e300;
+    const double dist = path_length_m(rows);
+    for (const TruthPoint& p : rows) {
         if (p.t_s >= next_t - 1e-9) {
             t.points.push_back(p);
             next_t = p.t_s + period_s;
@@ -216,10 +223,7 @@ Truth read_koroglu_gcp(const std::string& path) {
     }
     if (t.points.size() < 2) throw std::runtime_error(path + ": fewer than two footprints");
     t.step_count = static_cast<int>(t.points.size()) - 1;
-    double d = 0.0;
-    for (size_t i = 1; i < t.points.size(); ++i)
-        d += std::hypot(t.points[i].x_m - t.points[i - 1].x_m, t.points[i].y_m - t.points[i - 1].y_m);
-    t.distance_m = d;
+    t.distance_m = path_length_m(t.points);
     return t;
 }
 
