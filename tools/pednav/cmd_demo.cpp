@@ -26,6 +26,8 @@ constexpr const char* kUsage =
 
 }  // namespace
 
+const char* const pednav_cmd_demo_usage = kUsage;
+
 int pednav_cmd_demo(const std::vector<std::string>& argv) {
     using namespace pednav;
     cli::Args args(argv, kUsage);

@@ -6,3 +6,5 @@
 // on), runs it through the foot preset via the real loader, prints the error
 // against the exact truth, writes the track, the truth and an SVG plot.
 int pednav_cmd_demo(const std::vector<std::string>& args);
+// Its usage text (pednav demo --help).
+extern const char* const pednav_cmd_demo_usage;

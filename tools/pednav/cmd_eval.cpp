@@ -23,43 +23,37 @@ constexpr const char* kUsage =
 
 }  // namespace
 
+const char* const pednav_cmd_eval_usage = kUsage;
+
 int pednav_cmd_eval(const std::vector<std::string>& args) {
     using namespace pednav::eval;
     std::string track_path, truth_path, kind = "auto", align_name, steps_path;
     bool json = false;
     EvalOptions options;
-    try {
-        pednav::cli::Args in(args);
-        while (!in.done()) {
-            const std::string a = in.next();
-            auto value = [&] { return in.value(a); };
-            if (a == "--track")
-                track_path = value();
-            else if (a == "--truth")
-                truth_path = value();
-            else if (a == "--kind")
-                kind = value();
-            else if (a == "--align")
-                align_name = value();
-            else if (a == "--fit-points")
-                options.fit_points = static_cast<size_t>(pednav::cli::parse_count(value(), a));
-            else if (a == "--steps")
-                steps_path = value();
-            else if (a == "--json")
-                json = true;
-            else if (a == "--help" || a == "-h") {
-                std::fputs(kUsage, stdout);
-                return 0;
-            } else
-                throw pednav::cli::UsageError("unknown option " + a);
-        }
-        if (track_path.empty()) throw pednav::cli::UsageError("--track is required");
-        if (truth_path.empty() && kind.rfind("loop", 0) != 0)
-            throw pednav::cli::UsageError("--truth is required");
-    } catch (const pednav::cli::UsageError& e) {
-        std::fprintf(stderr, "pednav eval: %s\n%s", e.what(), kUsage);
-        return 2;
+    pednav::cli::Args in(args, kUsage);
+    while (!in.done()) {
+        const std::string a = in.next();
+        auto value = [&] { return in.value(a); };
+        if (a == "--track")
+            track_path = value();
+        else if (a == "--truth")
+            truth_path = value();
+        else if (a == "--kind")
+            kind = value();
+        else if (a == "--align")
+            align_name = value();
+        else if (a == "--fit-points")
+            options.fit_points = static_cast<size_t>(pednav::cli::parse_count(value(), a));
+        else if (a == "--steps")
+            steps_path = value();
+        else if (a == "--json")
+            json = true;
+        else
+            throw pednav::cli::UsageError("unknown option " + a);
     }
+    if (track_path.empty()) throw pednav::cli::UsageError("--track is required");
+    if (truth_path.empty() && kind.rfind("loop", 0) != 0)
+        throw pednav::cli::UsageError("--truth is required");
     try {
         Track track = read_track_csv(track_path);
         if (!steps_path.empty()) {

@@ -6,3 +6,5 @@
 
 // args exclude the word "eval". Returns the process exit status.
 int pednav_cmd_eval(const std::vector<std::string>& args);
+// Its usage text (pednav eval --help).
+extern const char* const pednav_cmd_eval_usage;

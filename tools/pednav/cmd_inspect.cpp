@@ -47,6 +47,8 @@ void print_text(const pednav::io::SensorLog& log, bool forced) {
 
 }  // namespace
 
+const char* const pednav_cmd_inspect_usage = kUsage;
+
 int pednav_cmd_inspect(const std::vector<std::string>& argv) {
     using namespace pednav;
     cli::Args args(argv, kUsage);

@@ -15,6 +15,8 @@ constexpr const char* kUsage =
 
 }  // namespace
 
+const char* const pednav_cmd_plugins_usage = kUsage;
+
 int pednav_cmd_plugins(const std::vector<std::string>& argv) {
     using namespace pednav;
     cli::Args args(argv, kUsage);

@@ -3,3 +3,5 @@
 #include <vector>
 // pednav plugins [--json] [--plugin-dir DIR]...: what was loaded and rejected.
 int pednav_cmd_plugins(const std::vector<std::string>& args);
+// Its usage text (pednav plugins --help).
+extern const char* const pednav_cmd_plugins_usage;

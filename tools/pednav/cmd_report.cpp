@@ -278,46 +278,40 @@ std::string default_data_dir() {
 
 }  // namespace
 
+const char* const pednav_cmd_report_usage = kUsage;
+
 int pednav_cmd_report(const std::vector<std::string>& args) {
     std::string out, data, only;
     std::vector<std::string> mounts{"foot", "chest", "waist"}, plugin_dirs{cli::default_plugin_dir()};
     uint64_t seed = 1;
     bool recordings = true, simulated = true;
-    try {
-        pednav::cli::Args in(args);
-        while (!in.done()) {
-            const std::string a = in.next();
-            auto value = [&] { return in.value(a); };
-            if (a == "--out")
-                out = value();
-            else if (a == "--data")
-                data = value();
-            else if (a == "--only")
-                only = value();
-            else if (a == "--seed")
-                seed = pednav::cli::parse_count(value(), a);
-            else if (a == "--plugin-dir")
-                plugin_dirs.push_back(value());
-            else if (a == "--no-recordings")
-                recordings = false;
-            else if (a == "--no-sim")
-                simulated = false;
-            else if (a == "--mounts") {
-                mounts.clear();
-                std::string list = value() + ",";
-                for (size_t p = 0, q; (q = list.find(',', p)) != std::string::npos; p = q + 1)
-                    if (q > p) mounts.push_back(list.substr(p, q - p));
-            } else if (a == "--help" || a == "-h") {
-                std::fputs(kUsage, stdout);
-                return 0;
-            } else
-                throw pednav::cli::UsageError("unknown option " + a);
-        }
-        if (out.empty()) throw pednav::cli::UsageError("--out is required");
-    } catch (const pednav::cli::UsageError& e) {
-        std::fprintf(stderr, "pednav report: %s\n%s", e.what(), kUsage);
-        return 2;
+    pednav::cli::Args in(args, kUsage);
+    while (!in.done()) {
+        const std::string a = in.next();
+        auto value = [&] { return in.value(a); };
+        if (a == "--out")
+            out = value();
+        else if (a == "--data")
+            data = value();
+        else if (a == "--only")
+            only = value();
+        else if (a == "--seed")
+            seed = pednav::cli::parse_count(value(), a);
+        else if (a == "--plugin-dir")
+            plugin_dirs.push_back(value());
+        else if (a == "--no-recordings")
+            recordings = false;
+        else if (a == "--no-sim")
+            simulated = false;
+        else if (a == "--mounts") {
+            mounts.clear();
+            std::string list = value() + ",";
+            for (size_t p = 0, q; (q = list.find(',', p)) != std::string::npos; p = q + 1)
+                if (q > p) mounts.push_back(list.substr(p, q - p));
+        } else
+            throw pednav::cli::UsageError("unknown option " + a);
     }
+    if (out.empty()) throw pednav::cli::UsageError("--out is required");
     try {
         if (data.empty()) data = default_data_dir();
         make_dirs(out + "/plots");

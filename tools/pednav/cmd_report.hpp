@@ -9,3 +9,5 @@
 
 // args exclude the word "report". Returns the process exit status.
 int pednav_cmd_report(const std::vector<std::string>& args);
+// Its usage text (pednav report --help).
+extern const char* const pednav_cmd_report_usage;

@@ -27,6 +27,8 @@ constexpr const char* kUsage =
 
 }  // namespace
 
+const char* const pednav_cmd_run_usage = kUsage;
+
 int pednav_cmd_run(const std::vector<std::string>& argv) {
     using namespace pednav;
     cli::Args args(argv, kUsage);

@@ -6,3 +6,5 @@
 //   [--geojson FILE] [--gpx FILE] [--summary FILE] [--plot FILE.svg] [--plugin-dir DIR]...
 //   [--column-map FILE.json] [--origin lat,lon,height]
 int pednav_cmd_run(const std::vector<std::string>& args);
+// Its usage text (pednav run --help).
+extern const char* const pednav_cmd_run_usage;

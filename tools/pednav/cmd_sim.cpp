@@ -26,59 +26,53 @@ constexpr const char* kUsage =
 
 }  // namespace
 
+const char* const pednav_cmd_sim_usage = kUsage;
+
 int pednav_cmd_sim(const std::vector<std::string>& args) {
     using namespace pednav::sim;
     std::string route_arg, out_dir;
     SimOptions options;
-    try {
-        pednav::cli::Args in(args);
-        while (!in.done()) {
-            const std::string a = in.next();
-            auto value = [&] { return in.value(a); };
-            if (a == "--route")
-                route_arg = value();
-            else if (a == "--out")
-                out_dir = value();
-            else if (a == "--mount")
-                options.mount = value();
-            else if (a == "--rate")
-                options.rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
-            else if (a == "--seed")
-                options.seed = pednav::cli::parse_count(value(), a);
-            else if (a == "--no-errors")
-                options.sensor_errors = false;
-            else if (a == "--no-mag")
-                options.with_mag = false;
-            else if (a == "--no-baro")
-                options.with_baro = false;
-            else if (a == "--no-gnss")
-                options.with_gnss = false;
-            else if (a == "--mag-rate")
-                options.mag_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
-            else if (a == "--baro-rate")
-                options.baro_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
-            else if (a == "--heel-strike-g")
-                options.heel_strike_g = pednav::cli::parse_numbers(value(), 1, a)[0];
-            else if (a == "--mounting") {
-                const std::vector<double> rpy = pednav::cli::parse_numbers(value(), 3, a);
-                std::copy(rpy.begin(), rpy.end(), options.mounting_rpy_deg);
-            } else if (a == "--list") {
-                for (const std::string& name : builtin_route_names())
-                    std::printf("%-16s %s\n", name.c_str(), builtin_route(name).description.c_str());
-                return 0;
-            } else if (a == "--help" || a == "-h") {
-                std::fputs(kUsage, stdout);
-                return 0;
-            } else {
-                throw pednav::cli::UsageError("unknown option " + a);
-            }
+    pednav::cli::Args in(args, kUsage);
+    while (!in.done()) {
+        const std::string a = in.next();
+        auto value = [&] { return in.value(a); };
+        if (a == "--route")
+            route_arg = value();
+        else if (a == "--out")
+            out_dir = value();
+        else if (a == "--mount")
+            options.mount = value();
+        else if (a == "--rate")
+            options.rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
+        else if (a == "--seed")
+            options.seed = pednav::cli::parse_count(value(), a);
+        else if (a == "--no-errors")
+            options.sensor_errors = false;
+        else if (a == "--no-mag")
+            options.with_mag = false;
+        else if (a == "--no-baro")
+            options.with_baro = false;
+        else if (a == "--no-gnss")
+            options.with_gnss = false;
+        else if (a == "--mag-rate")
+            options.mag_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
+        else if (a == "--baro-rate")
+            options.baro_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
+        else if (a == "--heel-strike-g")
+            options.heel_strike_g = pednav::cli::parse_numbers(value(), 1, a)[0];
+        else if (a == "--mounting") {
+            const std::vector<double> rpy = pednav::cli::parse_numbers(value(), 3, a);
+            std::copy(rpy.begin(), rpy.end(), options.mounting_rpy_deg);
+        } else if (a == "--list") {
+            for (const std::string& name : builtin_route_names())
+                std::printf("%-16s %s\n", name.c_str(), builtin_route(name).description.c_str());
+            return 0;
+        } else {
+            throw pednav::cli::UsageError("unknown option " + a);
         }
-        if (route_arg.empty() || out_dir.empty())
-            throw pednav::cli::UsageError("--route and --out are required");
-    } catch (const pednav::cli::UsageError& e) {
-        std::fprintf(stderr, "pednav sim: %s\n%s", e.what(), kUsage);
-        return 2;
     }
+    if (route_arg.empty() || out_dir.empty())
+        throw pednav::cli::UsageError("--route and --out are required");
     try {
         Route route;
         std::ifstream in(route_arg);

@@ -7,3 +7,5 @@
 
 // args exclude the word "sim". Returns the process exit status.
 int pednav_cmd_sim(const std::vector<std::string>& args);
+// Its usage text (pednav sim --help).
+extern const char* const pednav_cmd_sim_usage;

@@ -1,4 +1,4 @@
-// The subcommands beyond run and plugins, each in its own file.
+// Every pednav command: its name, its entry point and its usage text.
 #pragma once
 
 #include <string>
@@ -6,7 +6,9 @@
 
 struct PednavSubcommand {
     const char* name;
-    int (*run)(const std::vector<std::string>& args);
+    int (*run)(const std::vector<std::string>& args);  // args exclude the command's name
+    const char* usage;
+    const char* summary;  // one line for pednav's own usage
 };
 
 const std::vector<PednavSubcommand>& pednav_subcommands();
