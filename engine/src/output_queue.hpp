@@ -11,6 +11,8 @@
 
 #include <pednav/pn_engine.h>
 
+#include "record_copy.hpp"
+
 namespace pednav::engine {
 
 class OutputQueue {
@@ -20,7 +22,7 @@ public:
     // Copies the record, stamping its header's source_id.
     void push(const pn_record_header_t* r, uint32_t source_id) {
         if (r->type < PN_REC_TYPE_COUNT) {
-            std::memcpy(latest_[r->type].bytes, r, r->struct_size);
+            copy_record(latest_[r->type].bytes, r);
             latest_[r->type].header.source_id = source_id;
             has_latest_[r->type] = true;
         }
@@ -30,7 +32,7 @@ public:
             return;
         }
         pn_output_t& slot = slots_[tail % slots_.size()];
-        std::memcpy(slot.bytes, r, r->struct_size);
+        copy_record(slot.bytes, r);
         slot.header.source_id = source_id;
         tail_.store(tail + 1, std::memory_order_release);
     }

@@ -10,6 +10,8 @@
 
 #include <pednav/pn_types.h>
 
+#include "record_copy.hpp"
+
 namespace pednav::engine {
 
 class RecordQueue {
@@ -26,7 +28,7 @@ public:
     void push(const pn_record_header_t* r) {
         if (end_ - begin_ > mask_) grow();
         Slot& s = slots_[end_ & mask_];
-        std::memcpy(s.bytes, r, r->struct_size);
+        copy_record(s.bytes, r);
         ++end_;
     }
     Seq begin() const { return begin_; }

@@ -26,6 +26,7 @@
 #include <pednav_sim/simulate.hpp>
 
 #include "foot_eval.hpp"
+#include "record_copy.hpp"
 
 namespace {
 
@@ -49,7 +50,7 @@ struct Sink {
     static pn_status_t emit(const pnp_sink_t* s, const pn_record_header_t* r) noexcept {
         auto* self = static_cast<Sink*>(s->sink_data);
         if (self->count == self->records.size()) return PN_E_OUT_OF_MEMORY;
-        std::memcpy(self->records[self->count++].data(), r, r->struct_size);
+        pednav::engine::copy_record(self->records[self->count++].data(), r);
         return PN_OK;
     }
 };
