@@ -131,6 +131,7 @@ private:
         c.heel_strike_deg = p.number("heel_strike_deg", c.heel_strike_deg, 0.0, 90.0);
         c.max_dt_s = p.number("max_dt_s", c.max_dt_s, 1e-4, 10.0);
         c.filter_rate_hz = p.number("filter_rate_hz", c.filter_rate_hz, 0.0, 10000.0);
+        c.swing_propagation_s = p.number("swing_propagation_s", c.swing_propagation_s, 0.0, 1.0);
         c.joseph_form = p.boolean("joseph_form", c.joseph_form);
         return c;
     }

@@ -26,6 +26,8 @@ namespace {
 // in the order written, so the results are the bits of the scalar expressions.
 typedef double v4d __attribute__((vector_size(32)));
 
+#define PEDNAV_EKF15_INLINE inline __attribute__((always_inline))
+
 }  // namespace
 
 // Load and store four doubles at a 32-byte aligned address (macros, not
@@ -35,9 +37,51 @@ typedef double v4d __attribute__((vector_size(32)));
 
 namespace pednav::foot {
 
+namespace {
+
+// The rows of P that a transition I + E changes, E nonzero in rows ATT, POS, VEL.
+constexpr int ATT = Ekf15::ATT, BG = Ekf15::BG, POS = Ekf15::POS, VEL = Ekf15::VEL, BA = Ekf15::BA;
+constexpr int NP = Ekf15::NP;
+
+// (I + E) P (I + E)^T = P + N + N^T + N_G with N = E P (its rows ATT, POS,
+// VEL in Nm, 9 x 16) and N_G = E P E^T, whose entry between the changed rows
+// a <= b (indices 0..8 into ATT, POS, VEL) ng(a, b) returns.
+template <class NG>
+PEDNAV_EKF15_INLINE void add_transition_terms(double (*P_)[NP], const double (*Nm)[NP], NG ng) {
+    // P += N + N^T + N_G. Entries between the changed rows (ATT, POS, VEL) add
+    // N(a, b) + N(b, a), a commutative sum, and N_G from its upper triangle;
+    // entries against BG, BA get N once. Each value is written to the upper
+    // triangle only (its one copy): exactly symmetric.
+    static constexpr int kRows[9] = {ATT, ATT + 1, ATT + 2, POS, POS + 1, POS + 2, VEL, VEL + 1, VEL + 2};
+    static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
+    PEDNAV_EKF15_UNROLL
+    for (int a = 0; a < 9; ++a) {
+        PEDNAV_EKF15_ROW_BARRIER
+        const int ra = kRows[a];
+        const double* na = Nm[a];
+        double* pa = P_[ra];
+        // BA columns (12..14, and the zero padding 15): one vector.
+        st4(pa + BA, ld4(pa + BA) + ld4(na + BA));
+        PEDNAV_EKF15_UNROLL
+        for (int o = 0; o < 3; ++o) {
+            const int c = kOther[o];
+            if (ra < c) pa[c] = pa[c] + na[c];
+            else P_[c][ra] = P_[c][ra] + na[c];
+        }
+        PEDNAV_EKF15_UNROLL
+        for (int b = a; b < 9; ++b) {
+            const int rb = kRows[b];
+            pa[rb] = pa[rb] + (na[rb] + Nm[b][ra]) + ng(a, b);
+        }
+    }
+}
+
+}  // namespace
+
 void Ekf15::reset_covariance(const double* diag) {
     std::memset(P_, 0, sizeof P_);
     std::memset(x_, 0, sizeof x_);
+    deferred_.clear();
     if (diag)
         for (int i = 0; i < N; ++i) P_[i][i] = diag[i];
 }
@@ -62,6 +106,7 @@ void Ekf15::mirror_lower() {
 
 PEDNAV_EKF15_CLONES
 void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
+    apply_deferred();
     // The products below read whole rows of P: restore the lower triangle.
     mirror_lower();
     // Phi = I + G with G nonzero only in rows ATT, POS, VEL:
@@ -92,7 +137,6 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
         st4(Nm[7] + c, -fz * a0 + fx * a2 + Rd[1][0] * e0 + Rd[1][1] * e1 + Rd[1][2] * e2);
         st4(Nm[8] + c, fy * a0 - fx * a1 + Rd[2][0] * e0 + Rd[2][1] * e1 + Rd[2][2] * e2);
     }
-    static constexpr int kRows[9] = {ATT, ATT + 1, ATT + 2, POS, POS + 1, POS + 2, VEL, VEL + 1, VEL + 2};
     // N_G = N G^T restricted to rows/cols (ATT, POS, VEL); column b of G^T is
     // row b of G: (Rd on BG) for ATT, (dt on VEL) for POS, (-skew(f) dt on ATT,
     // Rd on BA) for VEL. Only the 3 x 3 blocks on or above the block diagonal
@@ -141,47 +185,104 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
             st4(NV[2] + k, fy * t[0] - fx * t[1] + r20 * e[0] + r21 * e[1] + r22 * e[2]);
         }
     }
-    // P += N + N^T + N_G. Entries between the changed rows (ATT, POS, VEL) add
-    // N(a, b) + N(b, a), a commutative sum, and N_G from its upper triangle;
-    // entries against BG, BA get N once. Each value is written to the upper
-    // triangle only (its one copy): exactly symmetric.
-    static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
+    add_transition_terms(P_, Nm, [&](int a, int b) { return b < 6 ? NG[a][b] : NV[b - 6][a]; });
+    // Q (isotropic densities, so R Q R^T = Q).
+    add_noise(q.gyro_psd * dt, q.gyro_bias_psd * dt, q.accel_psd * dt, q.accel_bias_psd * dt);
+}
+
+void Ekf15::add_noise(double q_att, double q_bg, double q_vel, double q_ba) {
+    for (int i = 0; i < 3; ++i) {
+        P_[ATT + i][ATT + i] += q_att;
+        P_[VEL + i][VEL + i] += q_vel;
+        P_[BG + i][BG + i] += q_bg;
+        P_[BA + i][BA + i] += q_ba;
+    }
+}
+
+PEDNAV_EKF15_CLONES
+void Ekf15::SwingTransition::add(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
+    // The POS blocks first (they take the values before this interval), then
+    // VB (with C before it), sigma and C.
+    const v4d c0 = ld4(C[0]), c1 = ld4(C[1]), c2 = ld4(C[2]);
+    st4(PB[0], ld4(PB[0]) + dt * ld4(VB[0]));
+    st4(PB[1], ld4(PB[1]) + dt * ld4(VB[1]));
+    st4(PB[2], ld4(PB[2]) + dt * ld4(VB[2]));
+    st4(PE[0], ld4(PE[0]) + dt * c0);
+    st4(PE[1], ld4(PE[1]) + dt * c1);
+    st4(PE[2], ld4(PE[2]) + dt * c2);
+    st4(rho, ld4(rho) + dt * ld4(sigma));
+    // VB += -skew(f dt) C, -skew(f dt) = [[0, fz, -fy], [-fz, 0, fx], [fy, -fx, 0]] dt
+    const double fx = f.x() * dt, fy = f.y() * dt, fz = f.z() * dt;
+    st4(VB[0], ld4(VB[0]) + (fz * c1 - fy * c2));
+    st4(VB[1], ld4(VB[1]) + (fx * c2 - fz * c0));
+    st4(VB[2], ld4(VB[2]) + (fy * c0 - fx * c1));
+    const v4d fd = {fx, fy, fz, 0.0};
+    st4(sigma, ld4(sigma) + fd);
+    for (int r = 0; r < 3; ++r) {
+        const v4d row = {R(r, 0), R(r, 1), R(r, 2), 0.0};
+        st4(C[r], ld4(C[r]) - dt * row);
+    }
+    t_s += dt;
+    q_att += q.gyro_psd * dt;
+    q_bg += q.gyro_bias_psd * dt;
+    q_vel += q.accel_psd * dt;
+    q_ba += q.accel_bias_psd * dt;
+}
+
+PEDNAV_EKF15_CLONES
+void Ekf15::apply_transition() {
+    const SwingTransition& m = deferred_;
+    add_noise(0.5 * m.q_att, 0.5 * m.q_bg, 0.5 * m.q_vel, 0.5 * m.q_ba);
+    mirror_lower();
+    // The skew blocks E(VEL, ATT) = -skew(sigma) and E(POS, ATT) = -skew(rho) written out.
+    const double VA[3][3] = {{0.0, m.sigma[2], -m.sigma[1]}, {-m.sigma[2], 0.0, m.sigma[0]}, {m.sigma[1], -m.sigma[0], 0.0}};
+    const double PA[3][3] = {{0.0, m.rho[2], -m.rho[1]}, {-m.rho[2], 0.0, m.rho[0]}, {m.rho[1], -m.rho[0], 0.0}};
+    const double t = m.t_s;
+    // N = E P, rows ATT, POS, VEL (9 x 16), four columns at a time.
+    alignas(64) double Nm[9][NP];
+    PEDNAV_EKF15_UNROLL
+    for (int c = 0; c < NP; c += 4) {
+        PEDNAV_EKF15_ROW_BARRIER
+        const v4d a0 = ld4(P_[ATT] + c), a1 = ld4(P_[ATT + 1] + c), a2 = ld4(P_[ATT + 2] + c);
+        const v4d b0 = ld4(P_[BG] + c), b1 = ld4(P_[BG + 1] + c), b2 = ld4(P_[BG + 2] + c);
+        const v4d e0 = ld4(P_[BA] + c), e1 = ld4(P_[BA + 1] + c), e2 = ld4(P_[BA + 2] + c);
+        PEDNAV_EKF15_UNROLL
+        for (int r = 0; r < 3; ++r) {
+            const v4d cb = m.C[r][0] * b0 + m.C[r][1] * b1 + m.C[r][2] * b2;
+            st4(Nm[r] + c, cb);
+            st4(Nm[3 + r] + c, PA[r][0] * a0 + PA[r][1] * a1 + PA[r][2] * a2 +
+                                   (m.PB[r][0] * b0 + m.PB[r][1] * b1 + m.PB[r][2] * b2) + t * ld4(P_[VEL + r] + c) +
+                                   (m.PE[r][0] * e0 + m.PE[r][1] * e1 + m.PE[r][2] * e2));
+            st4(Nm[6 + r] + c, VA[r][0] * a0 + VA[r][1] * a1 + VA[r][2] * a2 +
+                                   (m.VB[r][0] * b0 + m.VB[r][1] * b1 + m.VB[r][2] * b2) +
+                                   (m.C[r][0] * e0 + m.C[r][1] * e1 + m.C[r][2] * e2));
+        }
+    }
+    // N_G = N E^T between the changed rows, upper triangle (b >= a): column b
+    // of E^T is row b of E.
+    double NG[9][9];
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < 9; ++a) {
-        PEDNAV_EKF15_ROW_BARRIER
-        const int ra = kRows[a];
-        const double* na = Nm[a];
-        double* pa = P_[ra];
-        // BA columns (12..14, and the zero padding 15): one vector.
-        st4(pa + BA, ld4(pa + BA) + ld4(na + BA));
-        PEDNAV_EKF15_UNROLL
-        for (int o = 0; o < 3; ++o) {
-            const int c = kOther[o];
-            if (ra < c) pa[c] = pa[c] + na[c];
-            else P_[c][ra] = P_[c][ra] + na[c];
-        }
+        const double* n = Nm[a];
         PEDNAV_EKF15_UNROLL
         for (int b = a; b < 9; ++b) {
-            const int rb = kRows[b];
-            pa[rb] = pa[rb] + (na[rb] + Nm[b][ra]) + (b < 6 ? NG[a][b] : NV[b - 6][a]);
+            const int r = b % 3;
+            const auto dot3 = [&](int col, const double* e) { return n[col] * e[0] + n[col + 1] * e[1] + n[col + 2] * e[2]; };
+            if (b < 3) NG[a][b] = dot3(BG, m.C[r]);
+            else if (b < 6)
+                NG[a][b] = dot3(ATT, PA[r]) + dot3(BG, m.PB[r]) + t * n[VEL + r] + dot3(BA, m.PE[r]);
+            else NG[a][b] = dot3(ATT, VA[r]) + dot3(BG, m.VB[r]) + dot3(BA, m.C[r]);
         }
     }
-    // Q (isotropic densities, so R Q R^T = Q).
-    const double qa = q.gyro_psd * dt, qv = q.accel_psd * dt;
-    const double qbg = q.gyro_bias_psd * dt, qba = q.accel_bias_psd * dt;
-    for (int i = 0; i < 3; ++i) {
-        P_[ATT + i][ATT + i] += qa;
-        P_[VEL + i][VEL + i] += qv;
-        P_[BG + i][BG + i] += qbg;
-        P_[BA + i][BA + i] += qba;
-    }
+    add_transition_terms(P_, Nm, [&](int a, int b) { return NG[a][b]; });
+    add_noise(0.5 * m.q_att, 0.5 * m.q_bg, 0.5 * m.q_vel, 0.5 * m.q_ba);
+    deferred_.clear();
 }
 
 
 // The update kernels are written once, always inlined, and called with the
 // state index as a literal for the indices the foot INS uses (ZUPT at VEL,
 // ZARU at BG, HUPT at POS + 2), so that every loop has constant bounds.
-#define PEDNAV_EKF15_INLINE inline __attribute__((always_inline))
 
 PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
     alignas(64) double c[NP];
@@ -229,6 +330,7 @@ PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
 
 PEDNAV_EKF15_CLONES
 void Ekf15::update_scalar(int i, double z, double var) {
+    apply_deferred();
     if (i == POS + 2) scalar_kernel(POS + 2, z, var);
     else scalar_kernel(i, z, var);
 }
@@ -319,6 +421,7 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
 
 PEDNAV_EKF15_CLONES
 void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
+    apply_deferred();
     if (i0 == VEL) block3_kernel(VEL, z, var);
     else if (i0 == BG) block3_kernel(BG, z, var);
     else block3_kernel(i0, z, var);

@@ -7,29 +7,59 @@ namespace pednav::foot {
 void Ekf15Dense::reset_covariance(const double* diag) {
     P_.setZero();
     x_.setZero();
+    deferred_M_.setIdentity();
+    deferred_Q_.setZero();
+    deferred_s_ = 0;
     if (diag)
         for (int i = 0; i < N; ++i) P_(i, i) = diag[i];
 }
 
-void Ekf15Dense::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
+Ekf15Dense::MatN Ekf15Dense::transition(double dt, const Mat3& R, const Vec3& f) {
     // Phi = I + A dt with the continuous error dynamics of ekf15.hpp.
     MatN Phi = MatN::Identity();
     Phi.block<3, 3>(ATT, BG) = -R * dt;
     Phi.block<3, 3>(POS, VEL) = Mat3::Identity() * dt;
     Phi.block<3, 3>(VEL, ATT) = -skew(f) * dt;
     Phi.block<3, 3>(VEL, BA) = -R * dt;
-    MatN Q = MatN::Zero();
+    return Phi;
+}
+
+Ekf15Dense::VecN Ekf15Dense::noise(double dt, const Noise& q) {
+    VecN d = VecN::Zero();
     for (int i = 0; i < 3; ++i) {
-        Q(ATT + i, ATT + i) = q.gyro_psd * dt;
-        Q(BG + i, BG + i) = q.gyro_bias_psd * dt;
-        Q(VEL + i, VEL + i) = q.accel_psd * dt;
-        Q(BA + i, BA + i) = q.accel_bias_psd * dt;
+        d(ATT + i) = q.gyro_psd * dt;
+        d(BG + i) = q.gyro_bias_psd * dt;
+        d(VEL + i) = q.accel_psd * dt;
+        d(BA + i) = q.accel_bias_psd * dt;
     }
+    return d;
+}
+
+void Ekf15Dense::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
+    apply_deferred();
+    const MatN Phi = transition(dt, R, f);
+    const MatN Q = noise(dt, q).asDiagonal();
     P_ = Phi * P_ * Phi.transpose() + Q;
+}
+
+void Ekf15Dense::defer_propagation(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
+    deferred_M_ = (transition(dt, R, f) * deferred_M_).eval();
+    deferred_Q_ += noise(dt, q);
+    deferred_s_ += dt;
+}
+
+void Ekf15Dense::apply_deferred() {
+    if (!(deferred_s_ > 0)) return;
+    const MatN half_Q = (0.5 * deferred_Q_).asDiagonal();
+    P_ = deferred_M_ * (P_ + half_Q) * deferred_M_.transpose() + half_Q;
+    deferred_M_.setIdentity();
+    deferred_Q_.setZero();
+    deferred_s_ = 0;
 }
 
 template <int M>
 void Ekf15Dense::update(int i0, const double* z, const double* var) {
+    apply_deferred();
     Eigen::Matrix<double, M, N> H = Eigen::Matrix<double, M, N>::Zero();
     Eigen::Matrix<double, M, M> Rm = Eigen::Matrix<double, M, M>::Zero();
     Eigen::Matrix<double, M, 1> zm;

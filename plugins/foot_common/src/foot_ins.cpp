@@ -92,7 +92,16 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
     const bool filter_step =
         filter_dt_acc_ > 0 && (cfg_.filter_rate_hz <= 0 || filter_dt_acc_ * cfg_.filter_rate_hz >= 0.999);
     if (filter_step) {
-        ekf_.propagate(filter_dt_acc_, R, filter_f_acc_ / filter_dt_acc_, noise_);
+        const Vec3 f_mean = filter_f_acc_ / filter_dt_acc_;
+        if (stance || !(cfg_.swing_propagation_s > 0)) {
+            ekf_.propagate(filter_dt_acc_, R, f_mean, noise_);
+        } else {
+            // No measurement before the next stance: the swing's transitions
+            // are multiplied together and applied every swing_propagation_s
+            // (and by the next propagate or update).
+            ekf_.defer_propagation(filter_dt_acc_, R, f_mean, noise_);
+            if (ekf_.deferred_s() >= 0.999 * cfg_.swing_propagation_s) ekf_.apply_deferred();
+        }
         filter_dt_acc_ = 0.0;
         filter_f_acc_.setZero();
     }

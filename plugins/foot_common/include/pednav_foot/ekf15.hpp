@@ -43,7 +43,24 @@ public:
     void reset_covariance(const double* diag15);
 
     // P <- Phi P Phi^T + Q for one interval (foot-imu-zupt-zaru-ekf eq. (32)).
+    // A deferred transition (below) is applied first.
     void propagate(double dt, const Mat3& r_enu_from_body, const Vec3& f_enu, const Noise& q);
+
+    // Intervals without a measurement (the swing) need P only at their end:
+    // their transitions are multiplied into one, M = Phi_k ... Phi_1 (its
+    // block structure kept, SwingTransition), and apply_deferred() then
+    // applies P <- M (P + Q/2) M^T + Q/2 once, with Q the summed process
+    // noise split between both ends (trapezoidal; all of it at the end is a
+    // first-order placement). Until then P() is the covariance of the last
+    // applied step. propagate() and the updates apply a deferred transition
+    // first.
+    void defer_propagation(double dt, const Mat3& r_enu_from_body, const Vec3& f_enu, const Noise& q) {
+        deferred_.add(dt, r_enu_from_body, f_enu, q);
+    }
+    double deferred_s() const { return deferred_.t_s; }
+    void apply_deferred() {
+        if (deferred_.t_s > 0) apply_transition();
+    }
 
     // Scalar measurement z = x[i] + noise(var): Kalman gain (eq. (31)), state
     // update (eq. (30)) and Joseph-form covariance (eq. (33)) with H = e_i.
@@ -60,6 +77,35 @@ public:
     void clear_state() { std::memset(x_, 0, sizeof x_); }
 
 private:
+    // E = M - I for M = Phi_k ... Phi_1 with every Phi = I + G as in
+    // propagate(): nonzero in rows ATT, POS, VEL only. Per interval,
+    // M <- (I + G) M gives E <- E + G + G E, with G E nonzero in
+    // (POS, ATT|BG|BA) = dt E(VEL, .) and (VEL, BG) = -skew(f) dt E(ATT, BG):
+    //   E(ATT, BG) = E(VEL, BA) = C     C     = -sum R dt
+    //   E(VEL, ATT) = -skew(sigma)      sigma = sum f dt
+    //   E(VEL, BG)  = VB                VB   += -skew(f dt) C
+    //   E(POS, ATT) = -skew(rho)        rho  += dt sigma
+    //   E(POS, BG)  = PB                PB   += dt VB
+    //   E(POS, VEL) = t_s I             t_s   = sum dt
+    //   E(POS, BA)  = PE                PE   += dt C
+    // (the POS blocks with the values before the interval's own terms).
+    // Rows padded to four (aligned, the padding zero).
+    struct SwingTransition {
+        alignas(32) double C[3][4];
+        alignas(32) double VB[3][4];
+        alignas(32) double PB[3][4];
+        alignas(32) double PE[3][4];
+        alignas(32) double sigma[4];
+        alignas(32) double rho[4];
+        double t_s;
+        double q_att, q_bg, q_vel, q_ba;  // summed process noise variances
+        SwingTransition() { clear(); }
+        void clear() { std::memset(this, 0, sizeof *this); }
+        void add(double dt, const Mat3& R, const Vec3& f, const Noise& q);
+    };
+    void apply_transition();
+    void add_noise(double q_att, double q_bg, double q_vel, double q_ba);
+
     // Entry (a, b) with a <= b holds P_ab; entries below the diagonal are
     // stale except right after mirror_lower(). Column 15 is padding, zero.
     void mirror_lower();
@@ -76,6 +122,7 @@ private:
 
     alignas(64) double P_[N][NP];
     alignas(32) double x_[NP];  // x_[15] is padding, zero
+    SwingTransition deferred_;
     bool joseph_ = true;
 };
 

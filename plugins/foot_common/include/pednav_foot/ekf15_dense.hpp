@@ -24,6 +24,11 @@ public:
     void set_joseph(bool joseph) { joseph_ = joseph; }
     void reset_covariance(const double* diag15);
     void propagate(double dt, const Mat3& r_enu_from_body, const Vec3& f_enu, const Noise& q);
+    // As Ekf15: M <- Phi M over the deferred intervals (a dense product here),
+    // then P <- M (P + Q/2) M^T + Q/2.
+    void defer_propagation(double dt, const Mat3& r_enu_from_body, const Vec3& f_enu, const Noise& q);
+    double deferred_s() const { return deferred_s_; }
+    void apply_deferred();
     void update_scalar(int i, double z, double var);
     void update_block3(int i0, const double z[3], const double var[3]);
 
@@ -37,8 +42,14 @@ private:
     template <int M>
     void update(int i0, const double* z, const double* var);
 
+    static MatN transition(double dt, const Mat3& R, const Vec3& f);
+    static VecN noise(double dt, const Noise& q);
+
     MatN P_;
     VecN x_;
+    MatN deferred_M_ = MatN::Identity();
+    VecN deferred_Q_ = VecN::Zero();
+    double deferred_s_ = 0;
     bool joseph_ = true;
 };
 
