@@ -206,11 +206,19 @@ private:
         return c1 && c2 && c3;                                                               // eq. (23)
     }
     bool test(const ShoeSums& x, const In&, double n, double& statistic) const {
-        const double mean_norm = std::sqrt(x.a[0] * x.a[0] + x.a[1] * x.a[1] + x.a[2] * x.a[2]) / n;
-        const double g = shoe_.gravity_mps2 > 0 ? shoe_.gravity_mps2 : mean_norm;
-        // sum_j |a_j - g u|^2 = sum |a_j|^2 - 2 g n |mean a| + n g^2, with u = mean a / |mean a|.
-        const double sum_acc = std::max(0.0, x.aa - 2.0 * g * n * mean_norm + n * g * g);
-        statistic = (sum_acc * shoe_ia_ + x.w2 * shoe_iw_) / n;
+        // sum_j |a_j - g u|^2 = sum |a_j|^2 - 2 g n |mean a| + n g^2, with u = mean a / |mean a|;
+        // with g = |mean a| (gravity_mps2 0) that is sum |a_j|^2 - |sum a|^2 / n, without the
+        // square root. One division, 1/n, off the chain of the sums.
+        const double inv_n = 1.0 / n;
+        const double sum2 = x.a[0] * x.a[0] + x.a[1] * x.a[1] + x.a[2] * x.a[2];
+        double sum_acc;
+        if (shoe_.gravity_mps2 > 0) {
+            const double g = shoe_.gravity_mps2;
+            sum_acc = x.aa - 2.0 * g * std::sqrt(sum2) + n * g * g;
+        } else {
+            sum_acc = x.aa - sum2 * inv_n;
+        }
+        statistic = (std::max(0.0, sum_acc) * shoe_ia_ + x.w2 * shoe_iw_) * inv_n;
         return statistic < shoe_.threshold;
     }
 
