@@ -68,6 +68,28 @@ TEST_CASE("renormalize brings a product of unit quaternions back to unit length,
     CHECK(far.w() == 1.0);
 }
 
+TEST_CASE("quat_mul_unit is the Hamilton product at unit length, in either order, also from off-unit factors") {
+    std::mt19937 rng(7);
+    std::normal_distribution<double> n01(0.0, 1.0);
+    double worst_product = 0, worst_norm = 0;
+    for (int k = 0; k < 1000; ++k) {
+        const Quat a = Quat(n01(rng), n01(rng), n01(rng), n01(rng)).normalized();
+        const Quat b = quat_exp(0.01 * Vec3(n01(rng), n01(rng), n01(rng)));
+        for (const auto& [l, r] : {std::pair<Quat, Quat>{a, b}, std::pair<Quat, Quat>{b, a}}) {
+            const Quat ref = (l * r).normalized();
+            const Quat got = quat_mul_unit(l, r);
+            worst_product = std::max(worst_product, (got.coeffs() - ref.coeffs()).cwiseAbs().maxCoeff());
+            worst_norm = std::max(worst_norm, std::abs(got.squaredNorm() - 1.0));
+        }
+    }
+    CHECK(worst_product < 1e-15);
+    CHECK(worst_norm < 1e-15);
+    // Far from unit length: normalized exactly.
+    const Quat big = quat_mul_unit(Quat(2.0, 0.0, 0.0, 0.0), Quat(0.0, 0.0, 3.0, 0.0));
+    CHECK(big.y() == 1.0);
+    CHECK(big.w() == 0.0);
+}
+
 TEST_CASE("atan2_fast agrees with libm's atan2 to about an ulp in every octant") {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -87,8 +87,7 @@ bool Strapdown::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
         const Vec3 w1 = w - bias_;
         Vec3 theta = 0.5 * (w0 + w1) * dt;
         if (cfg_.coning) theta += (dt * dt / 12.0) * w0.cross(w1);
-        q_ = q_ * quat_exp(theta);
-        renormalize(q_);
+        q_ = quat_mul_unit(q_, quat_exp(theta));
     }
     t_prev_ = t_ns;
     if (dt > 0) w_prev2_ = w_prev_;
@@ -132,8 +131,7 @@ void Strapdown::on_mag(int64_t t_ns, const Vec3& m) {
 }
 
 void Strapdown::apply_correction(const Vec3& rot, const Vec3& dbias) {
-    q_ = quat_exp(rot) * q_;
-    renormalize(q_);
+    q_ = quat_mul_unit(quat_exp(rot), q_);
     bias_ += dbias;
 }
 

@@ -83,6 +83,23 @@ inline void renormalize(Quat& q) {
     else q.normalize();
 }
 
+// a * b for unit quaternions, brought back to unit length as renormalize()
+// does, all in scalars: the vectorized product and norm load the quaternions
+// as pairs of doubles, and a pair just written as two scalars (quat_exp's
+// result, the previous product) cannot be forwarded from the store buffer,
+// a stall of tens of cycles per sample.
+inline Quat quat_mul_unit(const Quat& a, const Quat& b) {
+    const double aw = a.w(), ax = a.x(), ay = a.y(), az = a.z();
+    const double bw = b.w(), bx = b.x(), by = b.y(), bz = b.z();
+    double w = aw * bw - ax * bx - ay * by - az * bz;
+    double x = aw * bx + ax * bw + ay * bz - az * by;
+    double y = aw * by + ay * bw + az * bx - ax * bz;
+    double z = aw * bz + az * bw + ax * by - ay * bx;
+    const double n2 = (w * w + x * x) + (y * y + z * z);
+    const double k = std::abs(n2 - 1.0) < 1e-6 ? 0.5 * (3.0 - n2) : 1.0 / std::sqrt(n2);
+    return Quat(k * w, k * x, k * y, k * z);
+}
+
 // Rotation vector of the unit quaternion q (angle in [0, pi]).
 inline Vec3 quat_log(const Quat& q) {
     const Vec3 v(q.x(), q.y(), q.z());
