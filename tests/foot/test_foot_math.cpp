@@ -68,6 +68,20 @@ TEST_CASE("renormalize brings a product of unit quaternions back to unit length,
     CHECK(far.w() == 1.0);
 }
 
+TEST_CASE("rotate(q, v) is q.toRotationMatrix() * v bit for bit") {
+    std::mt19937 rng(11);
+    std::normal_distribution<double> n01(0.0, 1.0);
+    int differ = 0;
+    for (int k = 0; k < 1000; ++k) {
+        const Quat q = Quat(n01(rng), n01(rng), n01(rng), n01(rng)).normalized();
+        const Vec3 v(10 * n01(rng), 10 * n01(rng), 10 * n01(rng));
+        const Mat3 R = q.toRotationMatrix();
+        const Vec3 ref = R * v;
+        differ += rotate(q, v) != ref;
+    }
+    CHECK(differ == 0);
+}
+
 TEST_CASE("quat_mul_unit is the Hamilton product at unit length, in either order, also from off-unit factors") {
     std::mt19937 rng(7);
     std::normal_distribution<double> n01(0.0, 1.0);

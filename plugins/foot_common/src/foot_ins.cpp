@@ -76,7 +76,7 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
     }
 
     Mat3 R = q.toRotationMatrix();
-    Vec3 f = R * (a - ba_);
+    Vec3 f = rotate(q, a - ba_);
     if (dt > 0) {
         // Mid-interval specific force: foot-imu-zupt-zaru-ekf eq. (10)-(11)
         // with trapezoidal integration.
@@ -152,7 +152,7 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
         out.gyro_bias_delta = dbg;
         ekf_.clear_state();
         R = q.toRotationMatrix();
-        f = R * (a - ba_);
+        f = rotate(q, a - ba_);
     }
     f_prev_ = f;
     t_prev_ = t_ns;

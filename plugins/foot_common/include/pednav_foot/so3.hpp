@@ -83,6 +83,24 @@ inline void renormalize(Quat& q) {
     else q.normalize();
 }
 
+// q.toRotationMatrix() * v with the same bits, from q's entries (Eigen's
+// expressions for the matrix, and its order for the product: rows 0 and 1 as
+// one vector of two accumulated column by column, row 2 as a sum split in
+// halves): the product of a matrix just built on the stack reads its columns
+// back with loads that straddle the stores that wrote them, which the store
+// buffer cannot forward.
+inline Vec3 rotate(const Quat& q, const Vec3& v) {
+    const double w = q.w(), x = q.x(), y = q.y(), z = q.z();
+    const double tx = 2 * x, ty = 2 * y, tz = 2 * z;
+    const double twx = tx * w, twy = ty * w, twz = tz * w;
+    const double txx = tx * x, txy = ty * x, txz = tz * x;
+    const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
+    const double vx = v.x(), vy = v.y(), vz = v.z();
+    return Vec3(((1 - (tyy + tzz)) * vx + (txy - twz) * vy) + (txz + twy) * vz,
+                ((txy + twz) * vx + (1 - (txx + tzz)) * vy) + (tyz - twx) * vz,
+                (txz - twy) * vx + ((tyz + twx) * vy + (1 - (txx + tyy)) * vz));
+}
+
 // a * b for unit quaternions, brought back to unit length as renormalize()
 // does, all in scalars: the vectorized product and norm load the quaternions
 // as pairs of doubles, and a pair just written as two scalars (quat_exp's
