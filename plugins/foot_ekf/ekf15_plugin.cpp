@@ -121,6 +121,7 @@ private:
         c.zupt_sd_mps = p.number("zupt_sd_mps", c.zupt_sd_mps, 1e-6, 100.0);
         c.zaru_sd_radps = p.number("zaru_sd_radps", c.zaru_sd_radps, 1e-6, 100.0);
         c.zaru_max_radps = p.number("zaru_max_radps", c.zaru_max_radps, 0.0, 100.0);
+        c.zaru_moves_position = p.boolean("zaru_moves_position", c.zaru_moves_position);
         c.zupt_lever_m = p.number("zupt_lever_m", c.zupt_lever_m, 0.0, 10.0);
         c.sensor_height_m = p.number("sensor_height_m", c.sensor_height_m, 0.0, 0.5);
         c.hupt_sd_m = p.number("hupt_sd_m", c.hupt_sd_m, 1e-6, 100.0);

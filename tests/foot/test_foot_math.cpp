@@ -473,6 +473,52 @@ TEST_CASE("ZUPT on a rolling foot expects the sensor's velocity about the contac
     }
 }
 
+TEST_CASE("EKF block update that holds some states equals the textbook Joseph form with those gain rows zero") {
+    using MatN = Eigen::Matrix<double, 15, 15>;
+    const Ekf15::Noise q{1e-4, 1e-3, 1e-8, 1e-6};
+    Ekf15 ekf;
+    double d[15];
+    for (int i = 0; i < 15; ++i) d[i] = 0.01 * (i + 1);
+    ekf.reset_covariance(d);
+    for (int k = 0; k < 80; ++k)
+        ekf.propagate(0.005, attitude(0.03 * k, 0.2, 0.1 * std::sin(0.1 * k)), Vec3(2.0, -1.0, 9.81 + std::cos(0.2 * k)), q);
+    MatN P;
+    for (int i = 0; i < 15; ++i)
+        for (int j = 0; j < 15; ++j) P(i, j) = ekf.P(i, j);
+    const double z[3] = {0.003, -0.002, 0.001}, var[3] = {4e-4, 4e-4, 4e-4};
+    const uint32_t hold = 7u << Ekf15::POS;
+    // Textbook: K = P H^T S^-1 with the held rows zeroed, Joseph form.
+    Eigen::Matrix<double, 3, 15> H = Eigen::Matrix<double, 3, 15>::Zero();
+    for (int j = 0; j < 3; ++j) H(j, Ekf15::BG + j) = 1.0;
+    const Mat3 S = H * P * H.transpose() + Mat3(Vec3(var[0], var[1], var[2]).asDiagonal());
+    Eigen::Matrix<double, 15, 3> K = P * H.transpose() * S.inverse();
+    K.middleRows<3>(Ekf15::POS).setZero();
+    const MatN IKH = MatN::Identity() - K * H;
+    const MatN P_ref = IKH * P * IKH.transpose() + K * Mat3(Vec3(var[0], var[1], var[2]).asDiagonal()) * K.transpose();
+    const Eigen::Matrix<double, 15, 1> x_ref = K * Vec3(z[0], z[1], z[2]);
+    for (bool joseph : {true, false}) {  // a held state always takes the Joseph form
+        CAPTURE(joseph);
+        Ekf15 e = ekf;
+        e.set_joseph(joseph);
+        e.update_block3(Ekf15::BG, z, var, hold);
+        double dp = 0, dx = 0;
+        for (int i = 0; i < 15; ++i) {
+            dx = std::max(dx, std::abs(e.x()[i] - x_ref(i)));
+            for (int j = 0; j < 15; ++j) dp = std::max(dp, std::abs(e.P(i, j) - P_ref(i, j)));
+        }
+        CHECK(dp < 1e-14);
+        CHECK(dx < 1e-16);
+        for (int i = 0; i < 3; ++i) CHECK(e.x()[Ekf15::POS + i] == 0.0);
+    }
+    // Holding costs information: the held update leaves more variance than the optimal one.
+    Ekf15 opt = ekf;
+    opt.update_block3(Ekf15::BG, z, var);
+    Ekf15 held = ekf;
+    held.update_block3(Ekf15::BG, z, var, hold);
+    for (int i = 0; i < 15; ++i) CHECK(held.P(i, i) >= opt.P(i, i) - 1e-15);
+    CHECK(held.P(Ekf15::POS, Ekf15::POS) > opt.P(Ekf15::POS, Ekf15::POS));
+}
+
 TEST_CASE("EKF deferred swing propagation: the structured product equals the dense one, noise split at both ends") {
     using MatN = Eigen::Matrix<double, 15, 15>;
     const auto copy_P = [](const Ekf15& e) {

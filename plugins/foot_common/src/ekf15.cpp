@@ -335,7 +335,7 @@ void Ekf15::update_scalar(int i, double z, double var) {
     else scalar_kernel(i, z, var);
 }
 
-PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const double var[3]) {
+PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const double var[3], uint32_t hold_mask) {
     // C = P H^T (columns i0..i0+2, copies), S = H P H^T + R (a copied block).
     // C, K and W are kept transposed (3 rows of 16) so that the loops over
     // the states run along contiguous memory; their padding entries are zero
@@ -372,12 +372,15 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
         for (int k = 0; k < NP; k += 4)
             st4(KT[j] + k, ld4(CT[0] + k) * s0 + ld4(CT[1] + k) * s1 + ld4(CT[2] + k) * s2);
     }
+    if (hold_mask)
+        for (int k = 0; k < N; ++k)
+            if (hold_mask & (1u << k)) KT[0][k] = KT[1][k] = KT[2][k] = 0.0;
     // State (eq. (30)); x_[15] is padding and stays zero.
     const double e0 = z[0] - x_[i0], e1 = z[1] - x_[i0 + 1], e2 = z[2] - x_[i0 + 2];
     PEDNAV_EKF15_UNROLL
     for (int k = 0; k < NP; k += 4)
         st4(x_ + k, ld4(x_ + k) + (ld4(KT[0] + k) * e0 + ld4(KT[1] + k) * e1 + ld4(KT[2] + k) * e2));
-    if (!joseph_) {
+    if (!joseph_ && !hold_mask) {
         // P - K C^T (K C^T = C S^-1 C^T is symmetric): upper triangle, rows
         // from a multiple of 4.
         PEDNAV_EKF15_UNROLL
@@ -420,11 +423,11 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
 }
 
 PEDNAV_EKF15_CLONES
-void Ekf15::update_block3(int i0, const double z[3], const double var[3]) {
+void Ekf15::update_block3(int i0, const double z[3], const double var[3], uint32_t hold_mask) {
     apply_deferred();
-    if (i0 == VEL) block3_kernel(VEL, z, var);
-    else if (i0 == BG) block3_kernel(BG, z, var);
-    else block3_kernel(i0, z, var);
+    if (i0 == VEL) block3_kernel(VEL, z, var, hold_mask);
+    else if (i0 == BG) block3_kernel(BG, z, var, hold_mask);
+    else block3_kernel(i0, z, var, hold_mask);
 }
 
 }  // namespace pednav::foot

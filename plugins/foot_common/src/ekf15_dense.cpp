@@ -58,7 +58,7 @@ void Ekf15Dense::apply_deferred() {
 }
 
 template <int M>
-void Ekf15Dense::update(int i0, const double* z, const double* var) {
+void Ekf15Dense::update(int i0, const double* z, const double* var, uint32_t hold_mask) {
     apply_deferred();
     Eigen::Matrix<double, M, N> H = Eigen::Matrix<double, M, N>::Zero();
     Eigen::Matrix<double, M, M> Rm = Eigen::Matrix<double, M, M>::Zero();
@@ -70,15 +70,19 @@ void Ekf15Dense::update(int i0, const double* z, const double* var) {
     }
     const Eigen::Matrix<double, M, M> S = H * P_ * H.transpose() + Rm;
     if (!(S.determinant() > 0)) return;
-    const Eigen::Matrix<double, N, M> K = P_ * H.transpose() * S.inverse();
+    Eigen::Matrix<double, N, M> K = P_ * H.transpose() * S.inverse();
+    for (int k = 0; k < N; ++k)
+        if (hold_mask & (1u << k)) K.row(k).setZero();
     x_ += K * (zm - H * x_);
     const MatN IKH = MatN::Identity() - K * H;
-    if (joseph_) P_ = IKH * P_ * IKH.transpose() + K * Rm * K.transpose();
+    if (joseph_ || hold_mask) P_ = IKH * P_ * IKH.transpose() + K * Rm * K.transpose();
     else P_ = IKH * P_;
 }
 
 void Ekf15Dense::update_scalar(int i, double z, double var) { update<1>(i, &z, &var); }
 
-void Ekf15Dense::update_block3(int i0, const double z[3], const double var[3]) { update<3>(i0, z, var); }
+void Ekf15Dense::update_block3(int i0, const double z[3], const double var[3], uint32_t hold_mask) {
+    update<3>(i0, z, var, hold_mask);
+}
 
 }  // namespace pednav::foot

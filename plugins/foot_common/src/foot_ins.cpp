@@ -133,7 +133,12 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
             const double var1 = cfg_.zaru_sd_radps * cfg_.zaru_sd_radps;
             const double z[3] = {w_est.x(), w_est.y(), w_est.z()};
             const double var[3] = {var1, var1, var1};
-            ekf_.update_block3(Ekf15::BG, z, var);
+            // With zaru_moves_position false the position keeps its estimate:
+            // the rotation ZARU reads as bias may be the foot's own (a
+            // standing foot that sways), and the chain of correlations from
+            // bias to position then moves a standing foot by metres.
+            constexpr uint32_t kPosition = 7u << Ekf15::POS;
+            ekf_.update_block3(Ekf15::BG, z, var, cfg_.zaru_moves_position ? 0u : kPosition);
         }
         if (cfg_.hupt && level_step_) {
             ekf_.update_scalar(Ekf15::POS + 2, h_ref_ - p_.z(), cfg_.hupt_sd_m * cfg_.hupt_sd_m);

@@ -13,6 +13,7 @@
 // discretised as Phi = I + A dt (eq. (25)-(26)).
 #pragma once
 
+#include <cstdint>
 #include <cstring>
 
 #include "so3.hpp"
@@ -68,8 +69,11 @@ public:
 
     // Three measurements z = x[i0..i0+2] + noise (diagonal variances var) as
     // one block: the same Joseph form with H selecting three states, one pass
-    // over P instead of three.
-    void update_block3(int i0, const double z[3], const double var[3]);
+    // over P instead of three. States whose bit is set in hold_mask keep
+    // their estimate (their rows of K are zero, a "consider" update): the
+    // Joseph form keeps P right for that gain, so it is used then whatever
+    // set_joseph() says.
+    void update_block3(int i0, const double z[3], const double var[3], uint32_t hold_mask = 0);
 
     const double* x() const { return x_; }
     double* x() { return x_; }
@@ -118,7 +122,7 @@ private:
         for (int k = 0; k < i; ++k) out[k] = P_[k][i];
     }
     void scalar_kernel(int i, double z, double var);
-    void block3_kernel(int i0, const double z[3], const double var[3]);
+    void block3_kernel(int i0, const double z[3], const double var[3], uint32_t hold_mask);
 
     alignas(64) double P_[N][NP];
     alignas(32) double x_[NP];  // x_[15] is padding, zero

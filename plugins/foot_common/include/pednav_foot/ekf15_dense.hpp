@@ -30,7 +30,7 @@ public:
     double deferred_s() const { return deferred_s_; }
     void apply_deferred();
     void update_scalar(int i, double z, double var);
-    void update_block3(int i0, const double z[3], const double var[3]);
+    void update_block3(int i0, const double z[3], const double var[3], uint32_t hold_mask = 0);
 
     const double* x() const { return x_.data(); }
     double* x() { return x_.data(); }
@@ -40,7 +40,7 @@ public:
 private:
     // z = H x + noise with H selecting the M states from i0.
     template <int M>
-    void update(int i0, const double* z, const double* var);
+    void update(int i0, const double* z, const double* var, uint32_t hold_mask = 0);
 
     static MatN transition(double dt, const Mat3& R, const Vec3& f);
     static VecN noise(double dt, const Noise& q);

@@ -48,6 +48,9 @@ struct FootInsConfig {
     double zupt_sd_mps = 0.01;
     double zaru_sd_radps = 0.02;
     double zaru_max_radps = 0.1;      // ZARU only while |w - bg| is below this (a rolling foot is not still)
+    // ZARU also corrects the position (through its correlation with the gyro
+    // bias); false = a consider update that holds the position estimate.
+    bool zaru_moves_position = true;
     double zupt_lever_m = 0.3;        // ZUPT sd grows by this times |w - bg| (sensor ahead of the pivot)
     // Height of the sensor above the sole: a stance foot rolling about its
     // contact point moves the sensor horizontally at (w x up) times this, and
