@@ -28,6 +28,51 @@ Mat3 attitude(double heading, double pitch, double roll) {
             Eigen::AngleAxisd(roll, Vec3::UnitX()))
         .toRotationMatrix();
 }
+
+using MatN = Eigen::Matrix<double, 15, 15>;
+
+// The textbook transition and process noise of one interval, dense
+// (foot-imu-zupt-zaru-ekf eq. (25)-(26), (32)).
+MatN dense_transition(double dt, const Mat3& R, const Vec3& f) {
+    MatN Phi = MatN::Identity();
+    Phi.block<3, 3>(Ekf15::ATT, Ekf15::BG) = -R * dt;
+    Phi.block<3, 3>(Ekf15::POS, Ekf15::VEL) = Mat3::Identity() * dt;
+    Phi.block<3, 3>(Ekf15::VEL, Ekf15::ATT) = -skew(f) * dt;
+    Phi.block<3, 3>(Ekf15::VEL, Ekf15::BA) = -R * dt;
+    return Phi;
+}
+
+MatN dense_noise(double dt, const Ekf15::Noise& q) {
+    MatN Q = MatN::Zero();
+    for (int i = 0; i < 3; ++i) {
+        Q(Ekf15::ATT + i, Ekf15::ATT + i) = q.gyro_psd * dt;
+        Q(Ekf15::BG + i, Ekf15::BG + i) = q.gyro_bias_psd * dt;
+        Q(Ekf15::VEL + i, Ekf15::VEL + i) = q.accel_psd * dt;
+        Q(Ekf15::BA + i, Ekf15::BA + i) = q.accel_bias_psd * dt;
+    }
+    return Q;
+}
+
+// A filter whose covariance has every correlation: 60 steps at changing
+// attitudes and specific forces, then one velocity update.
+Ekf15 correlated_filter(const Ekf15::Noise& q) {
+    Ekf15 ekf;
+    double d[15];
+    for (int i = 0; i < 15; ++i) d[i] = 0.01 * (i + 1);
+    ekf.reset_covariance(d);
+    for (int k = 0; k < 60; ++k)
+        ekf.propagate(0.005, attitude(0.05 * k, 0.3 * std::sin(0.2 * k), -0.2), Vec3(3.0 * std::cos(0.3 * k), -2.0, 9.81), q);
+    const double z[3] = {0.01, -0.02, 0.0}, var[3] = {1e-4, 1e-4, 1e-4};
+    ekf.update_block3(Ekf15::VEL, z, var);
+    return ekf;
+}
+
+MatN covariance_of(const Ekf15& e) {
+    MatN P;
+    for (int i = 0; i < 15; ++i)
+        for (int j = 0; j < 15; ++j) P(i, j) = e.P(i, j);
+    return P;
+}
 }  // namespace
 
 TEST_CASE("skew matrix is the cross product (foot-imu-zupt-zaru-ekf eq. (9) as corrected)") {
@@ -215,31 +260,16 @@ TEST_CASE("EKF propagation matches the dense Phi P Phi^T + Q, and the Joseph upd
     const Vec3 f(1.0, -2.0, 9.81);
     const double dt = 0.005;
     for (int k = 0; k < 200; ++k) ekf.propagate(dt, R, f, q);
-    // One more step against the dense reference (foot-imu-zupt-zaru-ekf eq. (25)-(26), (32)).
-    Eigen::Matrix<double, 15, 15> P0, Phi = Eigen::Matrix<double, 15, 15>::Identity(),
-                                      Q = Eigen::Matrix<double, 15, 15>::Zero();
-    for (int i = 0; i < 15; ++i)
-        for (int j = 0; j < 15; ++j) P0(i, j) = ekf.P(i, j);
-    Phi.block<3, 3>(Ekf15::ATT, Ekf15::BG) = -R * dt;
-    Phi.block<3, 3>(Ekf15::POS, Ekf15::VEL) = Mat3::Identity() * dt;
-    Phi.block<3, 3>(Ekf15::VEL, Ekf15::ATT) = -skew(f) * dt;
-    Phi.block<3, 3>(Ekf15::VEL, Ekf15::BA) = -R * dt;
-    for (int i = 0; i < 3; ++i) {
-        Q(Ekf15::ATT + i, Ekf15::ATT + i) = q.gyro_psd * dt;
-        Q(Ekf15::VEL + i, Ekf15::VEL + i) = q.accel_psd * dt;
-        Q(Ekf15::BG + i, Ekf15::BG + i) = q.gyro_bias_psd * dt;
-        Q(Ekf15::BA + i, Ekf15::BA + i) = q.accel_bias_psd * dt;
-    }
-    const Eigen::Matrix<double, 15, 15> P1_ref = Phi * P0 * Phi.transpose() + Q;
+    // One more step against the dense reference.
+    const MatN P0 = covariance_of(ekf), Phi = dense_transition(dt, R, f);
+    const MatN P1_ref = Phi * P0 * Phi.transpose() + dense_noise(dt, q);
     ekf.propagate(dt, R, f, q);
     double max_prop_diff = 0;
     for (int i = 0; i < 15; ++i)
         for (int j = 0; j < 15; ++j) max_prop_diff = std::max(max_prop_diff, std::abs(ekf.P(i, j) - P1_ref(i, j)));
     CHECK(max_prop_diff < 1e-12);
     // Textbook update for H = e_9 on a copy.
-    Eigen::Matrix<double, 15, 15> P;
-    for (int i = 0; i < 15; ++i)
-        for (int j = 0; j < 15; ++j) P(i, j) = ekf.P(i, j);
+    const MatN P = covariance_of(ekf);
     const double r = 1e-4;
     const Eigen::Matrix<double, 15, 1> K = P.col(9) / (P(9, 9) + r);
     const Eigen::Matrix<double, 15, 15> P_ref = P - K * P.row(9);
@@ -474,17 +504,10 @@ TEST_CASE("ZUPT on a rolling foot expects the sensor's velocity about the contac
 }
 
 TEST_CASE("EKF block update that holds some states equals the textbook Joseph form with those gain rows zero") {
-    using MatN = Eigen::Matrix<double, 15, 15>;
     const Ekf15::Noise q{1e-4, 1e-3, 1e-8, 1e-6};
-    Ekf15 ekf;
-    double d[15];
-    for (int i = 0; i < 15; ++i) d[i] = 0.01 * (i + 1);
-    ekf.reset_covariance(d);
-    for (int k = 0; k < 80; ++k)
-        ekf.propagate(0.005, attitude(0.03 * k, 0.2, 0.1 * std::sin(0.1 * k)), Vec3(2.0, -1.0, 9.81 + std::cos(0.2 * k)), q);
-    MatN P;
-    for (int i = 0; i < 15; ++i)
-        for (int j = 0; j < 15; ++j) P(i, j) = ekf.P(i, j);
+    Ekf15 ekf = correlated_filter(q);
+    ekf.clear_state();
+    const MatN P = covariance_of(ekf);
     const double z[3] = {0.003, -0.002, 0.001}, var[3] = {4e-4, 4e-4, 4e-4};
     const uint32_t hold = 7u << Ekf15::POS;
     // Textbook: K = P H^T S^-1 with the held rows zeroed, Joseph form.
@@ -520,25 +543,10 @@ TEST_CASE("EKF block update that holds some states equals the textbook Joseph fo
 }
 
 TEST_CASE("EKF deferred swing propagation: the structured product equals the dense one, noise split at both ends") {
-    using MatN = Eigen::Matrix<double, 15, 15>;
-    const auto copy_P = [](const Ekf15& e) {
-        MatN P;
-        for (int i = 0; i < 15; ++i)
-            for (int j = 0; j < 15; ++j) P(i, j) = e.P(i, j);
-        return P;
-    };
     const auto max_abs = [](const MatN& m) { return m.cwiseAbs().maxCoeff(); };
     const Ekf15::Noise q{1e-4, 1e-3, 1e-8, 1e-6};
-    // A covariance with every correlation: steps at changing attitudes, one update.
-    Ekf15 ekf;
-    double d[15];
-    for (int i = 0; i < 15; ++i) d[i] = 0.01 * (i + 1);
-    ekf.reset_covariance(d);
-    for (int k = 0; k < 60; ++k)
-        ekf.propagate(0.005, attitude(0.05 * k, 0.3 * std::sin(0.2 * k), -0.2), Vec3(3.0 * std::cos(0.3 * k), -2.0, 9.81), q);
-    const double z[3] = {0.01, -0.02, 0.0}, var[3] = {1e-4, 1e-4, 1e-4};
-    ekf.update_block3(Ekf15::VEL, z, var);
-    const MatN P0 = copy_P(ekf);
+    Ekf15 ekf = correlated_filter(q);
+    const MatN P0 = covariance_of(ekf);
 
     // A swing: 24 intervals of uneven length, the foot pitching through 100
     // degrees and turning, specific force up to 3 g.
@@ -549,17 +557,7 @@ TEST_CASE("EKF deferred swing propagation: the structured product equals the den
         const double dt = 0.004 + 0.001 * (k % 3);
         const Mat3 R = attitude(0.4 + 0.02 * k, -0.8 + 0.075 * k, 0.1 * std::sin(0.5 * k));
         const Vec3 f(25.0 * std::sin(0.3 * k), 4.0 * std::cos(0.7 * k), 9.81 + 15.0 * std::cos(0.25 * k));
-        MatN Phi = MatN::Identity(), Q = MatN::Zero();
-        Phi.block<3, 3>(Ekf15::ATT, Ekf15::BG) = -R * dt;
-        Phi.block<3, 3>(Ekf15::POS, Ekf15::VEL) = Mat3::Identity() * dt;
-        Phi.block<3, 3>(Ekf15::VEL, Ekf15::ATT) = -skew(f) * dt;
-        Phi.block<3, 3>(Ekf15::VEL, Ekf15::BA) = -R * dt;
-        for (int i = 0; i < 3; ++i) {
-            Q(Ekf15::ATT + i, Ekf15::ATT + i) = q.gyro_psd * dt;
-            Q(Ekf15::BG + i, Ekf15::BG + i) = q.gyro_bias_psd * dt;
-            Q(Ekf15::VEL + i, Ekf15::VEL + i) = q.accel_psd * dt;
-            Q(Ekf15::BA + i, Ekf15::BA + i) = q.accel_bias_psd * dt;
-        }
+        const MatN Phi = dense_transition(dt, R, f), Q = dense_noise(dt, q);
         M = Phi * M;
         Qsum += Q;
         P_each = Phi * P_each * Phi.transpose() + Q;
@@ -569,20 +567,20 @@ TEST_CASE("EKF deferred swing propagation: the structured product equals the den
     }
     CHECK(ekf.deferred_s() == doctest::Approx(t_s).epsilon(1e-12));
     // Until applied, P is the covariance before the swing.
-    CHECK(max_abs(copy_P(ekf) - P0) == 0.0);
+    CHECK(max_abs(covariance_of(ekf) - P0) == 0.0);
 
     // The update applies the deferred transition first.
     Ekf15 updated = ekf;
     ekf.apply_deferred();
     CHECK(ekf.deferred_s() == 0.0);
-    const MatN P_def = copy_P(ekf);
+    const MatN P_def = covariance_of(ekf);
     const MatN P_ref = M * (P0 + 0.5 * Qsum) * M.transpose() + 0.5 * Qsum;
     CHECK(max_abs(P_def - P_ref) < 1e-12 * max_abs(P_ref));
     CHECK(max_abs(P_def - P_def.transpose()) == 0.0);
 
     // Against propagating every interval: the one product is exact but for
     // where the noise enters; half at each end is closer than all at the end.
-    CHECK(max_abs(copy_P(per_step) - P_each) < 1e-12 * max_abs(P_each));
+    CHECK(max_abs(covariance_of(per_step) - P_each) < 1e-12 * max_abs(P_each));
     // Errors relative to the noise's share of the swing's covariance (this
     // swing of 0.12 s, a little longer than the preset interval, at up to
     // 3 g: 4.6 % and 10 %; the rest of the covariance is exact).
@@ -598,6 +596,6 @@ TEST_CASE("EKF deferred swing propagation: the structured product equals the den
     const double zv = 0.05;
     updated.update_scalar(Ekf15::VEL, zv, 1e-4);
     ekf.update_scalar(Ekf15::VEL, zv, 1e-4);
-    CHECK(max_abs(copy_P(updated) - copy_P(ekf)) == 0.0);
+    CHECK(max_abs(covariance_of(updated) - covariance_of(ekf)) == 0.0);
     CHECK(updated.x()[Ekf15::VEL] == ekf.x()[Ekf15::VEL]);
 }
