@@ -73,15 +73,18 @@ inline Quat quat_exp(const Vec3& r) {
     return Quat(c, s * r.x(), s * r.y(), s * r.z());
 }
 
-// Brings q back to unit length after a product of unit quaternions (|q|^2 =
-// 1 + e with e of a few ulp): one Newton step q (3 - |q|^2) / 2, accurate to
-// O(e^2), without the square root and division of normalize() on the
-// per-sample path. Farther from unit length it normalizes exactly.
-inline void renormalize(Quat& q) {
-    const double n2 = q.squaredNorm();
-    if (std::abs(n2 - 1.0) < 1e-6) q.coeffs() *= 0.5 * (3.0 - n2);
-    else q.normalize();
+// The factor that brings a quaternion of squared norm n2 back to unit length
+// after a product of unit quaternions (n2 = 1 + e with e of a few ulp): one
+// Newton step (3 - n2) / 2, accurate to O(e^2), without the square root and
+// division on the per-sample path. Farther from unit length 1 / sqrt(n2)
+// (within an ulp of normalize()); a zero or NaN norm leaves q as it is.
+inline double unit_length_scale(double n2) {
+    if (std::abs(n2 - 1.0) < 1e-6) return 0.5 * (3.0 - n2);
+    return n2 > 0 ? 1.0 / std::sqrt(n2) : 1.0;
 }
+
+// q scaled back to unit length (unit_length_scale).
+inline void renormalize(Quat& q) { q.coeffs() *= unit_length_scale(q.squaredNorm()); }
 
 // q.toRotationMatrix() * v with the same bits, from q's entries (Eigen's
 // expressions for the matrix, and its order for the product: rows 0 and 1 as
@@ -113,8 +116,7 @@ inline Quat quat_mul_unit(const Quat& a, const Quat& b) {
     double x = aw * bx + ax * bw + ay * bz - az * by;
     double y = aw * by + ay * bw + az * bx - ax * bz;
     double z = aw * bz + az * bw + ax * by - ay * bx;
-    const double n2 = (w * w + x * x) + (y * y + z * z);
-    const double k = std::abs(n2 - 1.0) < 1e-6 ? 0.5 * (3.0 - n2) : 1.0 / std::sqrt(n2);
+    const double k = unit_length_scale((w * w + x * x) + (y * y + z * z));
     return Quat(k * w, k * x, k * y, k * z);
 }
 
