@@ -18,6 +18,8 @@
 #define PEDNAV_EKF15_ROW_BARRIER
 #define PEDNAV_EKF15_UNROLL
 #endif
+// The update kernels are always inlined into their callers (below).
+#define PEDNAV_EKF15_INLINE inline __attribute__((always_inline))
 
 namespace {
 
@@ -25,8 +27,6 @@ namespace {
 // the AVX clones, two SSE2 registers otherwise. Element-wise IEEE arithmetic
 // in the order written, so the results are the bits of the scalar expressions.
 typedef double v4d __attribute__((vector_size(32)));
-
-#define PEDNAV_EKF15_INLINE inline __attribute__((always_inline))
 
 }  // namespace
 
@@ -53,7 +53,6 @@ PEDNAV_EKF15_INLINE void add_transition_terms(double (*P_)[NP], const double (*N
     // entries against BG, BA get N once. Each value is written to the upper
     // triangle only (its one copy): exactly symmetric.
     static constexpr int kRows[9] = {ATT, ATT + 1, ATT + 2, POS, POS + 1, POS + 2, VEL, VEL + 1, VEL + 2};
-    static constexpr int kOther[6] = {BG, BG + 1, BG + 2, BA, BA + 1, BA + 2};
     PEDNAV_EKF15_UNROLL
     for (int a = 0; a < 9; ++a) {
         PEDNAV_EKF15_ROW_BARRIER
@@ -64,7 +63,7 @@ PEDNAV_EKF15_INLINE void add_transition_terms(double (*P_)[NP], const double (*N
         st4(pa + BA, ld4(pa + BA) + ld4(na + BA));
         PEDNAV_EKF15_UNROLL
         for (int o = 0; o < 3; ++o) {
-            const int c = kOther[o];
+            const int c = BG + o;
             if (ra < c) pa[c] = pa[c] + na[c];
             else P_[c][ra] = P_[c][ra] + na[c];
         }
@@ -74,6 +73,16 @@ PEDNAV_EKF15_INLINE void add_transition_terms(double (*P_)[NP], const double (*N
             pa[rb] = pa[rb] + (na[rb] + Nm[b][ra]) + ng(a, b);
         }
     }
+}
+
+// -skew(v) written out: [[0, v2, -v1], [-v2, 0, v0], [v1, -v0, 0]], so that
+// -skew(v) u = u x v. The propagation kernels spell out its products with
+// the same entries (f dt for v).
+struct Mat3Rows {
+    double m[3][3];
+};
+Mat3Rows minus_skew(const double* v) {
+    return {{{0.0, v[2], -v[1]}, {-v[2], 0.0, v[0]}, {v[1], -v[0], 0.0}}};
 }
 
 }  // namespace
@@ -116,8 +125,7 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     double Rd[3][3];
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) Rd[r][c] = -R(r, c) * dt;
-    const double fx = f.x() * dt, fy = f.y() * dt, fz = f.z() * dt;
-    // -skew(f) dt = [[0, fz, -fy], [-fz, 0, fx], [fy, -fx, 0]]
+    const double fx = f.x() * dt, fy = f.y() * dt, fz = f.z() * dt;  // -skew(f) dt: minus_skew(f dt)
 
     // N = G P, rows ATT, POS, VEL (9 x 16).
     // Four columns at a time; the constants are broadcast once.
@@ -187,22 +195,22 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     }
     add_transition_terms(P_, Nm, [&](int a, int b) { return b < 6 ? NG[a][b] : NV[b - 6][a]; });
     // Q (isotropic densities, so R Q R^T = Q).
-    add_noise(q.gyro_psd * dt, q.gyro_bias_psd * dt, q.accel_psd * dt, q.accel_bias_psd * dt);
+    add_noise(NoiseVariance::over(q, dt));
 }
 
-void Ekf15::add_noise(double q_att, double q_bg, double q_vel, double q_ba) {
+void Ekf15::add_noise(const NoiseVariance& q) {
     for (int i = 0; i < 3; ++i) {
-        P_[ATT + i][ATT + i] += q_att;
-        P_[VEL + i][VEL + i] += q_vel;
-        P_[BG + i][BG + i] += q_bg;
-        P_[BA + i][BA + i] += q_ba;
+        P_[ATT + i][ATT + i] += q.att_rad2;
+        P_[VEL + i][VEL + i] += q.vel_m2ps2;
+        P_[BG + i][BG + i] += q.gyro_bias_rad2ps2;
+        P_[BA + i][BA + i] += q.accel_bias_m2ps4;
     }
 }
 
 PEDNAV_EKF15_CLONES
 void Ekf15::SwingTransition::add(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // The POS blocks first (they take the values before this interval), then
-    // VB (with C before it), sigma and C.
+    // VB (with C before it), dv_mps and C.
     const v4d c0 = ld4(C[0]), c1 = ld4(C[1]), c2 = ld4(C[2]);
     st4(PB[0], ld4(PB[0]) + dt * ld4(VB[0]));
     st4(PB[1], ld4(PB[1]) + dt * ld4(VB[1]));
@@ -210,33 +218,32 @@ void Ekf15::SwingTransition::add(double dt, const Mat3& R, const Vec3& f, const 
     st4(PE[0], ld4(PE[0]) + dt * c0);
     st4(PE[1], ld4(PE[1]) + dt * c1);
     st4(PE[2], ld4(PE[2]) + dt * c2);
-    st4(rho, ld4(rho) + dt * ld4(sigma));
-    // VB += -skew(f dt) C, -skew(f dt) = [[0, fz, -fy], [-fz, 0, fx], [fy, -fx, 0]] dt
+    st4(dp_m, ld4(dp_m) + dt * ld4(dv_mps));
+    // VB += -skew(f dt) C (minus_skew(f dt) times C, written out)
     const double fx = f.x() * dt, fy = f.y() * dt, fz = f.z() * dt;
     st4(VB[0], ld4(VB[0]) + (fz * c1 - fy * c2));
     st4(VB[1], ld4(VB[1]) + (fx * c2 - fz * c0));
     st4(VB[2], ld4(VB[2]) + (fy * c0 - fx * c1));
     const v4d fd = {fx, fy, fz, 0.0};
-    st4(sigma, ld4(sigma) + fd);
+    st4(dv_mps, ld4(dv_mps) + fd);
     for (int r = 0; r < 3; ++r) {
         const v4d row = {R(r, 0), R(r, 1), R(r, 2), 0.0};
         st4(C[r], ld4(C[r]) - dt * row);
     }
     t_s += dt;
-    q_att += q.gyro_psd * dt;
-    q_bg += q.gyro_bias_psd * dt;
-    q_vel += q.accel_psd * dt;
-    q_ba += q.accel_bias_psd * dt;
+    q_sum += NoiseVariance::over(q, dt);
 }
 
 PEDNAV_EKF15_CLONES
 void Ekf15::apply_transition() {
     const SwingTransition& m = deferred_;
-    add_noise(0.5 * m.q_att, 0.5 * m.q_bg, 0.5 * m.q_vel, 0.5 * m.q_ba);
+    const NoiseVariance half_q = m.q_sum.scaled(0.5);
+    add_noise(half_q);
     mirror_lower();
-    // The skew blocks E(VEL, ATT) = -skew(sigma) and E(POS, ATT) = -skew(rho) written out.
-    const double VA[3][3] = {{0.0, m.sigma[2], -m.sigma[1]}, {-m.sigma[2], 0.0, m.sigma[0]}, {m.sigma[1], -m.sigma[0], 0.0}};
-    const double PA[3][3] = {{0.0, m.rho[2], -m.rho[1]}, {-m.rho[2], 0.0, m.rho[0]}, {m.rho[1], -m.rho[0], 0.0}};
+    // The skew blocks E(VEL, ATT) and E(POS, ATT).
+    const Mat3Rows va = minus_skew(m.dv_mps), pa = minus_skew(m.dp_m);
+    const auto& VA = va.m;
+    const auto& PA = pa.m;
     const double t = m.t_s;
     // N = E P, rows ATT, POS, VEL (9 x 16), four columns at a time.
     alignas(64) double Nm[9][NP];
@@ -275,7 +282,7 @@ void Ekf15::apply_transition() {
         }
     }
     add_transition_terms(P_, Nm, [&](int a, int b) { return NG[a][b]; });
-    add_noise(0.5 * m.q_att, 0.5 * m.q_bg, 0.5 * m.q_vel, 0.5 * m.q_ba);
+    add_noise(half_q);
     deferred_.clear();
 }
 
@@ -300,7 +307,7 @@ PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
         // below the diagonal that this touches are stale anyway.
         PEDNAV_EKF15_UNROLL
         for (int g = 0; g < N; g += 4) {
-                for (int a = g; a < g + 4 && a < N; ++a) {
+            for (int a = g; a < g + 4 && a < N; ++a) {
                 PEDNAV_EKF15_ROW_BARRIER
                 const double ca = c[a] * inv;
                 double* pa = P_[a];
@@ -316,7 +323,7 @@ PEDNAV_EKF15_INLINE void Ekf15::scalar_kernel(int i, double z, double var) {
     PEDNAV_EKF15_UNROLL
     for (int g = 0; g < N; g += 4) {
         for (int a = g; a < g + 4 && a < N; ++a) {
-                PEDNAV_EKF15_ROW_BARRIER
+            PEDNAV_EKF15_ROW_BARRIER
             const double ka = K[a], ca = c[a], ska = s * ka;
             double* pa = P_[a];
             PEDNAV_EKF15_UNROLL
@@ -385,7 +392,7 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
         // from a multiple of 4.
         PEDNAV_EKF15_UNROLL
         for (int g = 0; g < N; g += 4) {
-                for (int a = g; a < g + 4 && a < N; ++a) {
+            for (int a = g; a < g + 4 && a < N; ++a) {
                 PEDNAV_EKF15_ROW_BARRIER
                 const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
                 double* pa = P_[a];
@@ -410,7 +417,7 @@ PEDNAV_EKF15_INLINE void Ekf15::block3_kernel(int i0, const double z[3], const d
     PEDNAV_EKF15_UNROLL
     for (int g = 0; g < N; g += 4) {
         for (int a = g; a < g + 4 && a < N; ++a) {
-                PEDNAV_EKF15_ROW_BARRIER
+            PEDNAV_EKF15_ROW_BARRIER
             const double k0 = KT[0][a], k1 = KT[1][a], k2 = KT[2][a];
             const double c0 = CT[0][a], c1 = CT[1][a], c2 = CT[2][a];
             double* pa = P_[a];

@@ -25,12 +25,13 @@ Ekf15Dense::MatN Ekf15Dense::transition(double dt, const Mat3& R, const Vec3& f)
 }
 
 Ekf15Dense::VecN Ekf15Dense::noise(double dt, const Noise& q) {
+    const Ekf15::NoiseVariance v = Ekf15::NoiseVariance::over(q, dt);
     VecN d = VecN::Zero();
     for (int i = 0; i < 3; ++i) {
-        d(ATT + i) = q.gyro_psd * dt;
-        d(BG + i) = q.gyro_bias_psd * dt;
-        d(VEL + i) = q.accel_psd * dt;
-        d(BA + i) = q.accel_bias_psd * dt;
+        d(ATT + i) = v.att_rad2;
+        d(BG + i) = v.gyro_bias_rad2ps2;
+        d(VEL + i) = v.vel_m2ps2;
+        d(BA + i) = v.accel_bias_m2ps4;
     }
     return d;
 }

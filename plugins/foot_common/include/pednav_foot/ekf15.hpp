@@ -33,6 +33,28 @@ public:
         double accel_bias_psd = 0;  // (m/s^2)^2 / s
     };
 
+    // The process noise variances that Noise adds over an interval (Q's
+    // diagonal, isotropic per block).
+    struct NoiseVariance {
+        double att_rad2 = 0;
+        double gyro_bias_rad2ps2 = 0;
+        double vel_m2ps2 = 0;
+        double accel_bias_m2ps4 = 0;
+        static NoiseVariance over(const Noise& q, double dt_s) {
+            return {q.gyro_psd * dt_s, q.gyro_bias_psd * dt_s, q.accel_psd * dt_s, q.accel_bias_psd * dt_s};
+        }
+        NoiseVariance& operator+=(const NoiseVariance& o) {
+            att_rad2 += o.att_rad2;
+            gyro_bias_rad2ps2 += o.gyro_bias_rad2ps2;
+            vel_m2ps2 += o.vel_m2ps2;
+            accel_bias_m2ps4 += o.accel_bias_m2ps4;
+            return *this;
+        }
+        NoiseVariance scaled(double k) const {
+            return {k * att_rad2, k * gyro_bias_rad2ps2, k * vel_m2ps2, k * accel_bias_m2ps4};
+        }
+    };
+
     Ekf15() { reset_covariance(nullptr); }
 
     // Covariance update form: Joseph (eq. (33), default; robust to a gain that
@@ -85,30 +107,31 @@ private:
     // propagate(): nonzero in rows ATT, POS, VEL only. Per interval,
     // M <- (I + G) M gives E <- E + G + G E, with G E nonzero in
     // (POS, ATT|BG|BA) = dt E(VEL, .) and (VEL, BG) = -skew(f) dt E(ATT, BG):
-    //   E(ATT, BG) = E(VEL, BA) = C     C     = -sum R dt
-    //   E(VEL, ATT) = -skew(sigma)      sigma = sum f dt
-    //   E(VEL, BG)  = VB                VB   += -skew(f dt) C
-    //   E(POS, ATT) = -skew(rho)        rho  += dt sigma
-    //   E(POS, BG)  = PB                PB   += dt VB
-    //   E(POS, VEL) = t_s I             t_s   = sum dt
-    //   E(POS, BA)  = PE                PE   += dt C
-    // (the POS blocks with the values before the interval's own terms).
+    //   E(ATT, BG) = E(VEL, BA) = C     C      = -sum R dt            (s)
+    //   E(VEL, ATT) = -skew(dv_mps)     dv_mps = sum f dt             (m/s)
+    //   E(VEL, BG)  = VB                VB    += -skew(f dt) C        (m)
+    //   E(POS, ATT) = -skew(dp_m)       dp_m  += dt dv_mps            (m)
+    //   E(POS, BG)  = PB                PB    += dt VB                (m s)
+    //   E(POS, VEL) = t_s I             t_s    = sum dt               (s)
+    //   E(POS, BA)  = PE                PE    += dt C                 (s^2)
+    // (the POS blocks with the values before the interval's own terms):
+    // eight nonzero blocks, seven distinct. dv_mps and dp_m are the velocity
+    // and position that the specific force alone adds over the swing.
     // Rows padded to four (aligned, the padding zero).
     struct SwingTransition {
-        alignas(32) double C[3][4];
-        alignas(32) double VB[3][4];
-        alignas(32) double PB[3][4];
-        alignas(32) double PE[3][4];
-        alignas(32) double sigma[4];
-        alignas(32) double rho[4];
-        double t_s;
-        double q_att, q_bg, q_vel, q_ba;  // summed process noise variances
-        SwingTransition() { clear(); }
-        void clear() { std::memset(this, 0, sizeof *this); }
+        alignas(32) double C[3][4] = {};
+        alignas(32) double VB[3][4] = {};
+        alignas(32) double PB[3][4] = {};
+        alignas(32) double PE[3][4] = {};
+        alignas(32) double dv_mps[4] = {};
+        alignas(32) double dp_m[4] = {};
+        double t_s = 0;
+        NoiseVariance q_sum;  // summed over the intervals
+        void clear() { *this = SwingTransition(); }
         void add(double dt, const Mat3& R, const Vec3& f, const Noise& q);
     };
     void apply_transition();
-    void add_noise(double q_att, double q_bg, double q_vel, double q_ba);
+    void add_noise(const NoiseVariance& q);
 
     // Entry (a, b) with a <= b holds P_ab; entries below the diagonal are
     // stale except right after mirror_lower(). Column 15 is padding, zero.
