@@ -3,6 +3,7 @@
 // stance detectors on synthetic signals at several rates.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -111,6 +112,9 @@ TEST_CASE("renormalize brings a product of unit quaternions back to unit length,
     Quat far(2.0, 0.0, 0.0, 0.0);
     renormalize(far);
     CHECK(far.w() == 1.0);
+    Quat zero(0.0, 0.0, 0.0, 0.0);
+    renormalize(zero);
+    CHECK(zero.coeffs().cwiseAbs().maxCoeff() == 0.0);
 }
 
 TEST_CASE("rotate(q, v) is q.toRotationMatrix() * v bit for bit") {
@@ -147,6 +151,9 @@ TEST_CASE("quat_mul_unit is the Hamilton product at unit length, in either order
     const Quat big = quat_mul_unit(Quat(2.0, 0.0, 0.0, 0.0), Quat(0.0, 0.0, 3.0, 0.0));
     CHECK(big.y() == 1.0);
     CHECK(big.w() == 0.0);
+    // A zero product stays zero (no division by its norm).
+    const Quat zero = quat_mul_unit(Quat(0.0, 0.0, 0.0, 0.0), Quat(0.6, 0.0, 0.8, 0.0));
+    CHECK(zero.coeffs().cwiseAbs().maxCoeff() == 0.0);
 }
 
 TEST_CASE("atan2_fast agrees with libm's atan2 to about an ulp in every octant") {
@@ -411,6 +418,63 @@ TEST_CASE("running: the adaptive SHOE detector finds every brief, rolling stance
     }
 }
 
+TEST_CASE("SHOE statistic equals the direct sum over its window, with g given and with the window's |mean a|") {
+    // 200 Hz walk on a sensor reading 0.97 g at rest. The detector keeps
+    // running sums; the reference sums the window anew for every sample:
+    // T = 1/n sum_j (|a_j - g u|^2 / sigma_a^2 + |w_j|^2 / sigma_w^2), u = mean a / |mean a|.
+    const double g_read = 0.97 * 9.80665;
+    const Synthetic walk = gait(200.0, 0.35, 0.65, g_read, 6, 0.3, 1.0, 5);
+    double mean_still_given = 0, mean_still_own = 0;
+    for (double g : {0.0, 9.80665, 9.5}) {
+        CAPTURE(g);
+        ShoeConfig sc;
+        sc.adaptive_window_s = 0.0;
+        sc.gravity_mps2 = g;
+        StanceDetector shoe(sc, 1000.0);
+        std::vector<StanceDecision> out;
+        const auto keep = [&](const StanceDecision& x) { out.push_back(x); };
+        for (size_t k = 0; k < walk.t_ns.size(); ++k) shoe.push(walk.t_ns[k], walk.a[k].data(), walk.w[k].data(), keep);
+        shoe.flush(keep);
+        REQUIRE(out.size() == walk.t_ns.size());
+        const int64_t h = static_cast<int64_t>(std::llround(sc.window_s * 0.5e9));
+        double worst = 0, still_sum = 0;
+        int compared = 0, still_n = 0;
+        for (size_t k = 0; k < out.size(); ++k) {
+            const int64_t t = walk.t_ns[k];
+            if (t - h < walk.t_ns.front() || t + h > walk.t_ns.back()) continue;  // truncated windows
+            Vec3 sum_a = Vec3::Zero();
+            std::vector<size_t> in;
+            for (size_t j = 0; j < walk.t_ns.size(); ++j)
+                if (walk.t_ns[j] >= t - h && walk.t_ns[j] <= t + h) {
+                    in.push_back(j);
+                    sum_a += walk.a[j];
+                }
+            const double n = static_cast<double>(in.size());
+            const Vec3 u = sum_a.normalized();
+            const double gw = g > 0 ? g : sum_a.norm() / n;
+            double T = 0;
+            for (size_t j : in)
+                T += (walk.a[j] - gw * u).squaredNorm() / (sc.accel_sd_mps2 * sc.accel_sd_mps2) +
+                     walk.w[j].squaredNorm() / (sc.gyro_sd_radps * sc.gyro_sd_radps);
+            T /= n;
+            worst = std::max(worst, std::abs(out[k].statistic - T) / std::max(1.0, T));
+            ++compared;
+            if (t < 700000000) {  // the opening still period
+                still_sum += T;
+                ++still_n;
+            }
+        }
+        CHECK(compared > 1000);
+        CHECK(worst < 1e-9);
+        if (g == 0.0) mean_still_own = still_sum / still_n;
+        if (g == 9.80665) mean_still_given = still_sum / still_n;
+    }
+    // At rest the window's own |mean a| removes the 3 % scale error; a given
+    // g leaves (0.03 g)^2 / sigma_a^2 = 0.087 in T.
+    CHECK(mean_still_own < 0.02);
+    CHECK(mean_still_given - mean_still_own == doctest::Approx(std::pow(g_read - 9.80665, 2)).epsilon(0.05));
+}
+
 TEST_CASE("stance detector windows are in seconds: latency does not depend on the rate") {
     MultiConditionConfig mc;
     mc.window_s = 0.2;
@@ -569,8 +633,9 @@ TEST_CASE("EKF deferred swing propagation: the structured product equals the den
     // Until applied, P is the covariance before the swing.
     CHECK(max_abs(covariance_of(ekf) - P0) == 0.0);
 
-    // The update applies the deferred transition first.
-    Ekf15 updated = ekf;
+    // The updates and propagate() apply the deferred transition first;
+    // reset_covariance() drops it.
+    Ekf15 updated = ekf, block_updated = ekf, propagated = ekf, reset = ekf;
     ekf.apply_deferred();
     CHECK(ekf.deferred_s() == 0.0);
     const MatN P_def = covariance_of(ekf);
@@ -593,9 +658,33 @@ TEST_CASE("EKF deferred swing propagation: the structured product equals the den
     CHECK(err_split < 0.06);
     CHECK(err_split < 0.6 * err_end);
 
+    const auto same = [&](const Ekf15& a, const Ekf15& b) {
+        CHECK(a.deferred_s() == 0.0);
+        CHECK(max_abs(covariance_of(a) - covariance_of(b)) == 0.0);
+        for (int i = 0; i < 15; ++i) CHECK(a.x()[i] == b.x()[i]);
+    };
+    Ekf15 applied = ekf;
     const double zv = 0.05;
     updated.update_scalar(Ekf15::VEL, zv, 1e-4);
-    ekf.update_scalar(Ekf15::VEL, zv, 1e-4);
-    CHECK(max_abs(covariance_of(updated) - covariance_of(ekf)) == 0.0);
-    CHECK(updated.x()[Ekf15::VEL] == ekf.x()[Ekf15::VEL]);
+    applied.update_scalar(Ekf15::VEL, zv, 1e-4);
+    same(updated, applied);
+    const double z3[3] = {0.02, -0.01, 0.005}, var3[3] = {1e-4, 2e-4, 3e-4};
+    applied = ekf;
+    block_updated.update_block3(Ekf15::BG, z3, var3);
+    applied.update_block3(Ekf15::BG, z3, var3);
+    same(block_updated, applied);
+    applied = ekf;
+    const Mat3 R1 = attitude(0.9, 0.1, 0.05);
+    const Vec3 f1(0.3, -0.2, 9.8);
+    propagated.propagate(0.005, R1, f1, q);
+    applied.propagate(0.005, R1, f1, q);
+    same(propagated, applied);
+    double d[15];
+    for (int i = 0; i < 15; ++i) d[i] = 0.02 * (i + 1);
+    Ekf15 fresh;
+    fresh.reset_covariance(d);
+    reset.reset_covariance(d);
+    reset.propagate(0.005, R1, f1, q);
+    fresh.propagate(0.005, R1, f1, q);
+    same(reset, fresh);
 }
