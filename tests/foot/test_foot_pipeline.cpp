@@ -371,10 +371,12 @@ TEST_CASE("a start heading given to the engine turns the track (yaw correction a
     }
 }
 
-TEST_CASE("ZARU that holds the position: a standing foot that sways is not moved by metres") {
+TEST_CASE("ZARU that holds the position: no walk's mean error grows, and the swaying last stances of koroglu 33 and 42 end nearer their footprints") {
     // At the end of koroglu 33 and 42 the foot stands while turning at
     // 0.03-0.1 rad/s, under the ZARU gate: ZARU reads the turn as gyro bias and,
     // through the bias-position correlation, moves the standing foot.
+    // Walk 39's final error grows (0.35 -> 1.65 m), the trade-off that keeps
+    // the option off in the preset (docs/foot-pipeline.md, "Weak points").
     const std::string preset_cfg = koroglu_config(nlohmann::json::object());
     const std::string hold_cfg = koroglu_config(ekf_patch({{"zaru_moves_position", false}}));
     for (int n : {33, 35, 39, 42, 44}) {
@@ -409,22 +411,40 @@ TEST_CASE("the dense textbook EKF plugin gives the same track as the hand-writte
                                                      a.pos_enu_m[2] - b.pos_enu_m[2]));
         max_cov_rel = std::max(max_cov_rel, std::abs(a.cov_enu_m2[0] - b.cov_enu_m2[0]) / a.cov_enu_m2[0]);
     }
-    CAPTURE(max_diff_m);
-    CAPTURE(max_cov_rel);
-    CHECK(max_diff_m < 1e-9);  // measured: 6e-14 m
+    MESSAGE("koroglu 35, fast vs dense: largest position difference " << max_diff_m
+            << " m, largest relative difference of the east variance " << max_cov_rel);
+    CHECK(max_diff_m < 1e-9);
     CHECK(max_cov_rel < 1e-9);
-    // Both covariance forms: Joseph (the preset) and P - K H P.
-    for (bool joseph : {true, false}) {
-        nlohmann::json form = ekf_patch({{"joseph_form", joseph}});
+    // The preset, the other covariance form (P - K H P), propagation at every
+    // filter step, and the filter at 100 Hz on 200 Hz input (its steps span
+    // two samples, in the swing deferred and in stance propagated).
+    const nlohmann::json variants[] = {nlohmann::json::object(),
+                                       {{"joseph_form", false}},
+                                       {{"swing_propagation_s", 0}},
+                                       {{"filter_rate_hz", 100}}};
+    SimScore preset_sim{};
+    for (const nlohmann::json& params : variants) {
+        nlohmann::json form = ekf_patch(params);
         nlohmann::json dense_form = form;
         dense_form.merge_patch(dense);
         SimCase c;
         c.route = "stairs";
         const SimScore fast_sim = score_sim(c, foot_config(form));
         const SimScore dense_sim = score_sim(c, foot_config(dense_form));
-        CAPTURE(joseph);
+        CAPTURE(params.dump());
         CHECK(fast_sim.strides == dense_sim.strides);
         CHECK(std::abs(fast_sim.closure_m - dense_sim.closure_m) < 1e-9);
         CHECK(std::abs(fast_sim.mean_err_z_m - dense_sim.mean_err_z_m) < 1e-9);
+        if (params.empty()) preset_sim = fast_sim;
+        if (params.contains("swing_propagation_s")) {
+            // Deferring the swing's propagation changes the track only through
+            // where the swing's process noise enters the next stance's gains.
+            MESSAGE("stairs, swing_propagation_s 0 vs the preset: closure " << fast_sim.closure_m << " vs "
+                    << preset_sim.closure_m << " m, mean height error " << fast_sim.mean_err_z_m << " vs "
+                    << preset_sim.mean_err_z_m << " m");
+            CHECK(fast_sim.strides == preset_sim.strides);
+            CHECK(std::abs(fast_sim.closure_m - preset_sim.closure_m) < 0.002);  // measured: 7e-5 m
+            CHECK(std::abs(fast_sim.mean_err_z_m - preset_sim.mean_err_z_m) < 0.002);  // 1.3e-4 m
+        }
     }
 }

@@ -176,6 +176,8 @@ bool FootInsT<Filter>::close_stance(StrideOut& s) {
     const double duration = (last_t_ - stance_start_t_) * 1e-9;
     if (duration < cfg_.min_stance_s) return false;
     const double heading = heading_of(last_stance_q_);
+    // The position variance as last applied: at the last stance filter step
+    // (the first swing interval may already be deferred, a sample's noise).
     double cov[3];
     for (int i = 0; i < 3; ++i) cov[i] = ekf_.P(Ekf15::POS + i, Ekf15::POS + i);
     bool emitted = false;

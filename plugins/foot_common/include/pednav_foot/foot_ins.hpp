@@ -69,8 +69,9 @@ struct FootInsConfig {
     double filter_rate_hz = 0.0;
     // In the swing (no measurements) the covariance transitions are multiplied
     // together and P is propagated once per this interval (Ekf15::defer_propagation),
-    // and at the first stance sample; 0 = at every filter step. The per-sample
-    // position covariance then holds during that interval.
+    // and at the first filter step in stance (the first stance sample when
+    // filter_rate_hz is 0); 0 = at every filter step. The per-sample position
+    // covariance then holds during that interval.
     double swing_propagation_s = 0.1;
     bool joseph_form = true;  // covariance update in Joseph form (else P - K H P)
 };
