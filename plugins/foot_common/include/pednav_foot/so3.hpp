@@ -73,14 +73,24 @@ inline Quat quat_exp(const Vec3& r) {
     return Quat(c, s * r.x(), s * r.y(), s * r.z());
 }
 
+// 1 / sqrt(n2) for a quaternion far from unit length (off the per-sample
+// path, kept out of line so that the common case stays one branch); a zero or
+// NaN norm gives 1, which leaves the quaternion as it is.
+#if defined(__GNUC__)
+__attribute__((noinline, cold))
+#endif
+inline double far_unit_length_scale(double n2) {
+    return n2 > 0 ? 1.0 / std::sqrt(n2) : 1.0;
+}
+
 // The factor that brings a quaternion of squared norm n2 back to unit length
 // after a product of unit quaternions (n2 = 1 + e with e of a few ulp): one
 // Newton step (3 - n2) / 2, accurate to O(e^2), without the square root and
 // division on the per-sample path. Farther from unit length 1 / sqrt(n2)
-// (within an ulp of normalize()); a zero or NaN norm leaves q as it is.
+// (within an ulp of normalize()).
 inline double unit_length_scale(double n2) {
     if (std::abs(n2 - 1.0) < 1e-6) return 0.5 * (3.0 - n2);
-    return n2 > 0 ? 1.0 / std::sqrt(n2) : 1.0;
+    return far_unit_length_scale(n2);
 }
 
 // q scaled back to unit length (unit_length_scale).
