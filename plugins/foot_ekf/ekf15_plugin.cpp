@@ -107,6 +107,8 @@ private:
         c.zaru = p.boolean("zaru", c.zaru);
         c.hupt = p.boolean("hupt", c.hupt);
         c.gravity_mps2 = p.number("gravity_mps2", c.gravity_mps2, 0.0, 20.0);
+        c.accel_rescale_above = p.number("accel_rescale_above", c.accel_rescale_above, 0.0, 1.0);
+        c.local_gravity_mps2 = p.number("local_gravity_mps2", c.local_gravity_mps2, 9.7, 9.9);
         c.gyro_noise_radps_per_sqrthz = p.number("gyro_noise_radps_per_sqrthz", c.gyro_noise_radps_per_sqrthz, 0.0, 10.0);
         c.accel_noise_mps2_per_sqrthz = p.number("accel_noise_mps2_per_sqrthz", c.accel_noise_mps2_per_sqrthz, 0.0, 100.0);
         c.gyro_bias_walk_radps_per_sqrts =

@@ -67,16 +67,24 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
 
     if (g_learning_) {
         if (stance) {
-            g_sum_ += (a - ba_).norm();
+            g_sum_ += (accel_scale_ * a - ba_).norm() / accel_scale_;
             g_n_ += 1;
-            g_ = g_sum_ / g_n_;
+            const double g_read = g_sum_ / g_n_;  // mean |a - ba| as read
+            if (std::abs(g_read / cfg_.local_gravity_mps2 - 1.0) > cfg_.accel_rescale_above) {
+                accel_scale_ = cfg_.local_gravity_mps2 / g_read;
+                g_ = cfg_.local_gravity_mps2;
+            } else {
+                accel_scale_ = 1.0;
+                g_ = g_read;
+            }
         } else if (g_n_ > 0) {
             g_learning_ = false;
         }
     }
 
+    const Vec3 a_scaled = accel_scale_ * a;  // exact when the scale is 1
     Mat3 R = q.toRotationMatrix();
-    Vec3 f = rotate(q, a - ba_);
+    Vec3 f = rotate(q, a_scaled - ba_);
     if (dt > 0) {
         // Mid-interval specific force: foot-imu-zupt-zaru-ekf eq. (10)-(11)
         // with trapezoidal integration.
@@ -157,7 +165,7 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
         out.gyro_bias_delta = dbg;
         ekf_.clear_state();
         R = q.toRotationMatrix();
-        f = rotate(q, a - ba_);
+        f = rotate(q, a_scaled - ba_);
     }
     f_prev_ = f;
     t_prev_ = t_ns;

@@ -33,6 +33,17 @@ struct FootInsConfig {
     bool zaru = true;
     bool hupt = true;
     double gravity_mps2 = 0.0;  // 0 = mean |a| over the first stance (absorbs scale errors)
+    // With gravity learned (gravity_mps2 0) and |a| at rest off
+    // local_gravity_mps2 by more than this fraction, the accelerometer is
+    // taken to have a scale error and rescaled to read local_gravity_mps2 at
+    // rest: a sensor that reads 4.7 % high measures every stride 4.7 % long,
+    // and the ZUPT cannot see it (the velocity still returns to zero). Within
+    // it the reading is taken as gravity. At rest a bias along gravity looks
+    // the same as a scale error, and rescaling a biased sensor makes its
+    // strides wrong instead: 1 = never rescale (the preset), 0.02 = sensors
+    // more than 2 % off (local gravity itself varies by 0.5 % over the Earth).
+    double accel_rescale_above = 1.0;
+    double local_gravity_mps2 = 9.80665;
     // Process noise densities.
     double gyro_noise_radps_per_sqrthz = 0.002;
     double accel_noise_mps2_per_sqrthz = 0.2;
@@ -136,7 +147,8 @@ private:
     int64_t t_prev_ = 0;
     double filter_dt_acc_ = 0.0;
     Vec3 filter_f_acc_ = Vec3::Zero();
-    double g_ = 9.80665;
+    double g_ = 9.80665;            // gravity subtracted in the mechanization
+    double accel_scale_ = 1.0;      // k: the mechanization and EKF use k a
     bool g_learning_ = false;
     double g_sum_ = 0, g_n_ = 0;
 
