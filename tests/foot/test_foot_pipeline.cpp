@@ -89,6 +89,31 @@ TEST_CASE("issue 3: ipol foot files, 10 m out and 10 m back") {
     CHECK(std::abs(sum_annotated / legs - 10.0) < 0.3);
 }
 
+TEST_CASE("ipol: accelerometers rescaled to read gravity at rest bring the two feet's legs together") {
+    // The left-foot sensors read 10.26-10.28 m/s^2 at rest (4.7 % high), the
+    // right-foot ones 9.87-9.92 (0.7-1.1 %). With the scale as read the left
+    // foot measures every leg about 0.3 m longer than the right one; rescaled
+    // (accel_rescale_above 0: always) the feet agree and the legs come to 10 m.
+    const std::string rescaled = with_ekf({{"accel_rescale_above", 0.0}});
+    double diff_read = 0, diff_rescaled = 0;
+    int within_3pct = 0;
+    for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
+        const IpolScore lf = score_ipol(t, "lf", preset()), rf = score_ipol(t, "rf", preset());
+        const IpolScore lf2 = score_ipol(t, "lf", rescaled), rf2 = score_ipol(t, "rf", rescaled);
+        diff_read += std::abs(lf.leg_out_m - rf.leg_out_m) + std::abs(lf.leg_back_m - rf.leg_back_m);
+        diff_rescaled += std::abs(lf2.leg_out_m - rf2.leg_out_m) + std::abs(lf2.leg_back_m - rf2.leg_back_m);
+        for (double leg : {lf2.leg_out_m, lf2.leg_back_m, rf2.leg_out_m, rf2.leg_back_m})
+            within_3pct += std::abs(leg - 10.0) <= 0.3;
+    }
+    diff_read /= 16;
+    diff_rescaled /= 16;
+    MESSAGE("ipol, mean |left - right| leg: as read " << diff_read << " m, rescaled " << diff_rescaled
+            << " m; rescaled legs within 3 %: " << within_3pct << " of 32");
+    CHECK(diff_read > 0.25);      // measured 0.30 m
+    CHECK(diff_rescaled < 0.15);  // measured 0.11 m
+    CHECK(within_3pct >= 27);     // measured 27 (as read: 18)
+}
+
 TEST_CASE("issue 3: simulated 3 x 40 m corridor loop closes within 0.3 %") {
     for (double rate : {100.0, 200.0, 400.0}) {
         SimCase c;
