@@ -70,7 +70,9 @@ void FootInsT<Filter>::step(int64_t t_ns, const Vec3& a, const Vec3& w, const Qu
             g_sum_ += (accel_scale_ * a - ba_).norm() / accel_scale_;
             g_n_ += 1;
             const double g_read = g_sum_ / g_n_;  // mean |a - ba| as read
-            if (std::abs(g_read / cfg_.local_gravity_mps2 - 1.0) > cfg_.accel_rescale_above) {
+            const bool rescale = cfg_.accel_rescale_above < 1.0 && g_read > 0.0 && std::isfinite(g_read) &&
+                                 std::abs(g_read / cfg_.local_gravity_mps2 - 1.0) > cfg_.accel_rescale_above;
+            if (rescale) {
                 accel_scale_ = cfg_.local_gravity_mps2 / g_read;
                 g_ = cfg_.local_gravity_mps2;
             } else {
@@ -185,7 +187,7 @@ bool FootInsT<Filter>::close_stance(StrideOut& s) {
     if (duration < cfg_.min_stance_s) return false;
     const double heading = heading_of(last_stance_q_);
     // The position variance as last applied: at the last stance filter step
-    // (the first swing interval may already be deferred, a sample's noise).
+    // (the first swing interval may already be deferred: one filter step's noise).
     double cov[3];
     for (int i = 0; i < 3; ++i) cov[i] = ekf_.P(Ekf15::POS + i, Ekf15::POS + i);
     bool emitted = false;

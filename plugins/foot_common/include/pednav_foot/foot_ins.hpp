@@ -5,7 +5,8 @@
 //
 // Per sample k (attitude q_k from the attitude estimator, already including
 // every correction sent before k):
-//   f_k   = R_k (a_k - ba)                         specific force, ENU
+//   f_k   = R_k (k a_k - ba)                       specific force, ENU (k: accel
+//                                                  scale, 1 unless accel_rescale_above)
 //   v_k   = v_{k-1} + ((f_{k-1} + f_k)/2 - g) dt   mid-interval, cf. eq. (10)
 //   p_k   = p_{k-1} + (v_{k-1} + v_k)/2 dt         cf. eq. (11)
 // then P is propagated (eq. (32)) and, in stance, the measurements
@@ -32,7 +33,9 @@ struct FootInsConfig {
     bool zupt = true;
     bool zaru = true;
     bool hupt = true;
-    double gravity_mps2 = 0.0;  // 0 = mean |a| over the first stance (absorbs scale errors)
+    // Gravity subtracted in the mechanization; 0 = mean |a| over the first
+    // stance (the vertical then holds for a sensor that reads off at rest).
+    double gravity_mps2 = 0.0;
     // With gravity learned (gravity_mps2 0) and |a| at rest off
     // local_gravity_mps2 by more than this fraction, the accelerometer is
     // taken to have a scale error and rescaled to read local_gravity_mps2 at
