@@ -18,7 +18,7 @@
 #define PEDNAV_EKF15_ROW_BARRIER
 #define PEDNAV_EKF15_UNROLL
 #endif
-// The update kernels are always inlined into their callers (below).
+// The update kernels and the transition terms are always inlined into their callers.
 #define PEDNAV_EKF15_INLINE inline __attribute__((always_inline))
 
 namespace {

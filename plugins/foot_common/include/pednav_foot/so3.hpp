@@ -75,9 +75,12 @@ inline Quat quat_exp(const Vec3& r) {
 
 // 1 / sqrt(n2) for a quaternion far from unit length (off the per-sample
 // path, kept out of line so that the common case stays one branch); a zero or
-// NaN norm gives 1, which leaves the quaternion as it is.
+// NaN norm gives 1, which leaves the quaternion as it is (an infinite one
+// gives 0, and the quaternion NaN).
 #if defined(__GNUC__)
 __attribute__((noinline, cold))
+#elif defined(_MSC_VER)
+__declspec(noinline)
 #endif
 inline double far_unit_length_scale(double n2) {
     return n2 > 0 ? 1.0 / std::sqrt(n2) : 1.0;
