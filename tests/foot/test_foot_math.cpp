@@ -115,6 +115,7 @@ TEST_CASE("renormalize brings a product of unit quaternions back to unit length,
     Quat zero(0.0, 0.0, 0.0, 0.0);
     renormalize(zero);
     CHECK(zero.coeffs().cwiseAbs().maxCoeff() == 0.0);
+    CHECK(unit_length_scale(std::nan("")) == 1.0);
 }
 
 TEST_CASE("rotate(q, v) is q.toRotationMatrix() * v bit for bit") {
@@ -425,6 +426,7 @@ TEST_CASE("SHOE statistic equals the direct sum over its window, with g given an
     const double g_read = 0.97 * 9.80665;
     const Synthetic walk = gait(200.0, 0.35, 0.65, g_read, 6, 0.3, 1.0, 5);
     double mean_still_given = 0, mean_still_own = 0;
+    const ShoeConfig sc_default;
     for (double g : {0.0, 9.80665, 9.5}) {
         CAPTURE(g);
         ShoeConfig sc;
@@ -470,9 +472,11 @@ TEST_CASE("SHOE statistic equals the direct sum over its window, with g given an
         if (g == 9.80665) mean_still_given = still_sum / still_n;
     }
     // At rest the window's own |mean a| removes the 3 % scale error; a given
-    // g leaves (0.03 g)^2 / sigma_a^2 = 0.087 in T.
+    // g leaves (0.03 g)^2 / sigma_a^2 in T (0.087 with sigma_a 1 m/s^2).
     CHECK(mean_still_own < 0.02);
-    CHECK(mean_still_given - mean_still_own == doctest::Approx(std::pow(g_read - 9.80665, 2)).epsilon(0.05));
+    CHECK(mean_still_given - mean_still_own ==
+          doctest::Approx(std::pow(g_read - 9.80665, 2) / (sc_default.accel_sd_mps2 * sc_default.accel_sd_mps2))
+              .epsilon(0.05));
 }
 
 TEST_CASE("stance detector windows are in seconds: latency does not depend on the rate") {
@@ -565,6 +569,66 @@ TEST_CASE("ZUPT on a rolling foot expects the sensor's velocity about the contac
         CHECK(std::abs(out.vel.y() + height * w_enu.x()) < 1e-3);
         CHECK(std::abs(out.vel.z()) < 1e-3);
     }
+}
+
+namespace {
+// Strides of a foot that stands 1 s, then twice swings 0.7 m east (0.5 s,
+// a = A sin(2 pi t / T), back to rest) and stands 0.5 s; the accelerometer
+// reads accel_scale times the truth (a level sensor, no rotation).
+std::vector<double> stride_lengths_m(const FootInsConfig& c, double accel_scale, bool zero_first_sample = false) {
+    const double dt = 0.005, T = 0.5, A = 0.7 * 2.0 * M_PI / (T * T), g = 9.80665;
+    FootIns ins(c);
+    ins.set_start(Vec3::Zero(), NAN);
+    SampleOut out;
+    std::vector<double> strides;
+    int64_t t_ns = 0;
+    bool finite = true;
+    const auto sample = [&](double ax, bool stance) {
+        const Vec3 a = accel_scale * Vec3(ax, 0.0, g);
+        ins.step(t_ns, zero_first_sample && t_ns == 0 ? Vec3::Zero() : a, Vec3::Zero(), Quat::Identity(),
+                 Vec3::Zero(), stance, out);
+        if (out.stride) strides.push_back(ins.stride_out().displacement.x());
+        finite = finite && std::isfinite(out.pos.sum()) && std::isfinite(out.vel.sum());
+        t_ns += 5'000'000;
+    };
+    for (int k = 0; k < 200; ++k) sample(0.0, true);
+    for (int step = 0; step < 2; ++step) {
+        for (int k = 1; k < 100; ++k) sample(A * std::sin(2.0 * M_PI * k * dt / T), false);
+        for (int k = 0; k < 100; ++k) sample(0.0, true);
+    }
+    StrideOut last;
+    if (ins.finish(last)) strides.push_back(last.displacement.x());
+    if (!finite) strides.clear();
+    return strides;
+}
+}  // namespace
+
+TEST_CASE("accelerometer rescale: a sensor that reads off gravity at rest gets its strides back when asked") {
+    FootInsConfig c;
+    c.hupt = false;
+    const auto check_strides = [](const std::vector<double>& s, double expect_m) {
+        REQUIRE(s.size() == 2);
+        for (double d : s) CHECK(d == doctest::Approx(expect_m).epsilon(0.003));
+    };
+    // As read (the preset): every stride as long as the scale error makes it.
+    check_strides(stride_lengths_m(c, 1.047), 0.7 * 1.047);
+    check_strides(stride_lengths_m(c, 0.97), 0.7 * 0.97);
+    // Rescaled above 2 %: the 4.7 % and -3 % sensors, not the 1 % one.
+    c.accel_rescale_above = 0.02;
+    check_strides(stride_lengths_m(c, 1.047), 0.7);
+    check_strides(stride_lengths_m(c, 0.97), 0.7);
+    check_strides(stride_lengths_m(c, 1.01), 0.7 * 1.01);
+    c.accel_rescale_above = 0.0;
+    check_strides(stride_lengths_m(c, 1.01), 0.7);
+    // Local gravity other than the standard one: a sensor reading 9.80665 at
+    // the equator (9.78) reads 0.27 % high.
+    c.local_gravity_mps2 = 9.78;
+    check_strides(stride_lengths_m(c, 1.0), 0.7 * 9.78 / 9.80665);
+    // A first stance that starts with a zero reading (a logger's dropout):
+    // no division by it, every output finite.
+    c.local_gravity_mps2 = 9.80665;
+    c.accel_rescale_above = 0.02;
+    CHECK(stride_lengths_m(c, 1.0, true).size() == 2);
 }
 
 TEST_CASE("EKF block update that holds some states equals the textbook Joseph form with those gain rows zero") {
