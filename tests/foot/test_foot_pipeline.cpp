@@ -468,6 +468,7 @@ TEST_CASE("the dense textbook EKF plugin gives the same track as the hand-writte
                     << preset_sim.closure_m << " m, mean height error " << fast_sim.mean_err_z_m << " vs "
                     << preset_sim.mean_err_z_m << " m");
             CHECK(fast_sim.strides == preset_sim.strides);
+            CHECK(fast_sim.closure_m != preset_sim.closure_m);  // the parameter takes effect
             CHECK(std::abs(fast_sim.closure_m - preset_sim.closure_m) < 0.002);  // measured: 7e-5 m
             CHECK(std::abs(fast_sim.mean_err_z_m - preset_sim.mean_err_z_m) < 0.002);  // 1.3e-4 m
         }

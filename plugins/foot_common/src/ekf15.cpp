@@ -75,16 +75,6 @@ PEDNAV_EKF15_INLINE void add_transition_terms(double (*P_)[NP], const double (*N
     }
 }
 
-// -skew(v) written out: [[0, v2, -v1], [-v2, 0, v0], [v1, -v0, 0]], so that
-// -skew(v) u = u x v. The propagation kernels spell out its products with
-// the same entries (f dt for v).
-struct Mat3Rows {
-    double m[3][3];
-};
-Mat3Rows minus_skew(const double* v) {
-    return {{{0.0, v[2], -v[1]}, {-v[2], 0.0, v[0]}, {v[1], -v[0], 0.0}}};
-}
-
 }  // namespace
 
 void Ekf15::reset_covariance(const double* diag) {
@@ -125,7 +115,8 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     double Rd[3][3];
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) Rd[r][c] = -R(r, c) * dt;
-    const double fx = f.x() * dt, fy = f.y() * dt, fz = f.z() * dt;  // -skew(f) dt: minus_skew(f dt)
+    // -skew(f) dt = skew(-f dt) = [[0, fz, -fy], [-fz, 0, fx], [fy, -fx, 0]], written out below.
+    const double fx = f.x() * dt, fy = f.y() * dt, fz = f.z() * dt;
 
     // N = G P, rows ATT, POS, VEL (9 x 16).
     // Four columns at a time; the constants are broadcast once.
@@ -219,7 +210,7 @@ void Ekf15::SwingTransition::add(double dt, const Mat3& R, const Vec3& f, const 
     st4(PE[1], ld4(PE[1]) + dt * c1);
     st4(PE[2], ld4(PE[2]) + dt * c2);
     st4(dp_m, ld4(dp_m) + dt * ld4(dv_mps));
-    // VB += -skew(f dt) C (minus_skew(f dt) times C, written out)
+    // VB += -skew(f dt) C, written out as in propagate()
     const double fx = f.x() * dt, fy = f.y() * dt, fz = f.z() * dt;
     st4(VB[0], ld4(VB[0]) + (fz * c1 - fy * c2));
     st4(VB[1], ld4(VB[1]) + (fx * c2 - fz * c0));
@@ -240,10 +231,10 @@ void Ekf15::apply_transition() {
     const NoiseVariance half_q = m.q_sum.scaled(0.5);
     add_noise(half_q);
     mirror_lower();
-    // The skew blocks E(VEL, ATT) and E(POS, ATT).
-    const Mat3Rows va = minus_skew(m.dv_mps), pa = minus_skew(m.dp_m);
-    const auto& VA = va.m;
-    const auto& PA = pa.m;
+    // The skew blocks E(VEL, ATT) = -skew(dv) = skew(-dv) and E(POS, ATT) = skew(-dp),
+    // row-major so that a row is contiguous.
+    using RowMat3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+    const RowMat3 VA = skew(-Vec3::Map(m.dv_mps)), PA = skew(-Vec3::Map(m.dp_m));
     const double t = m.t_s;
     // N = E P, rows ATT, POS, VEL (9 x 16), four columns at a time.
     alignas(64) double Nm[9][NP];
@@ -257,10 +248,10 @@ void Ekf15::apply_transition() {
         for (int r = 0; r < 3; ++r) {
             const v4d cb = m.C[r][0] * b0 + m.C[r][1] * b1 + m.C[r][2] * b2;
             st4(Nm[r] + c, cb);
-            st4(Nm[3 + r] + c, PA[r][0] * a0 + PA[r][1] * a1 + PA[r][2] * a2 +
+            st4(Nm[3 + r] + c, PA(r, 0) * a0 + PA(r, 1) * a1 + PA(r, 2) * a2 +
                                    (m.PB[r][0] * b0 + m.PB[r][1] * b1 + m.PB[r][2] * b2) + t * ld4(P_[VEL + r] + c) +
                                    (m.PE[r][0] * e0 + m.PE[r][1] * e1 + m.PE[r][2] * e2));
-            st4(Nm[6 + r] + c, VA[r][0] * a0 + VA[r][1] * a1 + VA[r][2] * a2 +
+            st4(Nm[6 + r] + c, VA(r, 0) * a0 + VA(r, 1) * a1 + VA(r, 2) * a2 +
                                    (m.VB[r][0] * b0 + m.VB[r][1] * b1 + m.VB[r][2] * b2) +
                                    (m.C[r][0] * e0 + m.C[r][1] * e1 + m.C[r][2] * e2));
         }
@@ -277,8 +268,8 @@ void Ekf15::apply_transition() {
             const auto dot3 = [&](int col, const double* e) { return n[col] * e[0] + n[col + 1] * e[1] + n[col + 2] * e[2]; };
             if (b < 3) NG[a][b] = dot3(BG, m.C[r]);
             else if (b < 6)
-                NG[a][b] = dot3(ATT, PA[r]) + dot3(BG, m.PB[r]) + t * n[VEL + r] + dot3(BA, m.PE[r]);
-            else NG[a][b] = dot3(ATT, VA[r]) + dot3(BG, m.VB[r]) + dot3(BA, m.C[r]);
+                NG[a][b] = dot3(ATT, &PA(r, 0)) + dot3(BG, m.PB[r]) + t * n[VEL + r] + dot3(BA, m.PE[r]);
+            else NG[a][b] = dot3(ATT, &VA(r, 0)) + dot3(BG, m.VB[r]) + dot3(BA, m.C[r]);
         }
     }
     add_transition_terms(P_, Nm, [&](int a, int b) { return NG[a][b]; });
