@@ -34,6 +34,7 @@ PN_SENTINEL(sizeof(void *) == 8 && sizeof(size_t) == 8 && sizeof(double) == 8, l
 
 /* ------------------------------------------------------------ constants */
 PN_SENTINEL(PN_ABI_MAJOR == 1, abi_major);
+PN_SENTINEL(PN_ABI_MINOR == 1, abi_minor);
 PN_SENTINEL(PN_ABI_VERSION_MAJOR(PN_ABI_VERSION) == PN_ABI_MAJOR, abi_version_major);
 PN_SENTINEL(PN_ABI_VERSION_MINOR(PN_ABI_VERSION) == PN_ABI_MINOR, abi_version_minor);
 PN_SENTINEL(PN_RECORD_MAX_SIZE == 512, record_max_size);
@@ -80,6 +81,12 @@ PN_OFF(pn_error_t, reserved, 12);
 PN_OFF(pn_error_t, where, 16);
 PN_OFF(pn_error_t, message, 144);
 PN_SIZE(pn_error_t, 400);
+
+/* 1.1 */
+PN_OFF(pn_geo_point_t, lat_deg, 0);
+PN_OFF(pn_geo_point_t, lon_deg, 8);
+PN_OFF(pn_geo_point_t, height_m, 16);
+PN_SIZE(pn_geo_point_t, 24);
 
 PN_OFF(pn_record_header_t, struct_size, 0);
 PN_OFF(pn_record_header_t, type, 4);
@@ -166,7 +173,9 @@ PN_OFF(pnp_host_t, abi_version, 0);
 PN_OFF(pnp_host_t, struct_size, 4);
 PN_OFF(pnp_host_t, host_data, 8);
 PN_OFF(pnp_host_t, log, 16);
-PN_SIZE(pnp_host_t, 24);
+PN_OFF(pnp_host_t, get_origin, 24);   /* 1.1 */
+PN_OFF(pnp_host_t, offer_origin, 32); /* 1.1 */
+PN_SIZE(pnp_host_t, 40);
 
 PN_OFF(pnp_sink_t, sink_data, 0);
 PN_OFF(pnp_sink_t, emit, 8);
@@ -190,7 +199,7 @@ PN_OFF(pnp_node_ops_t, process, 24);
 PN_OFF(pnp_node_ops_t, flush, 32);
 PN_OFF(pnp_node_ops_t, reconfigure, 40);
 PN_OFF(pnp_node_ops_t, latency_ns, 48);
-PN_OFF(pnp_node_ops_t, get_extension, 56);
+PN_OFF(pnp_node_ops_t, reserved_slot, 56); /* 1.0's get_extension, withdrawn in 1.1 */
 PN_SIZE(pnp_node_ops_t, 64);
 
 PN_OFF(pnp_step_detector_ops_t, node, 0);

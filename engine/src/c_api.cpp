@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pn_engine.h implemented over engine::Engine. No exception leaves this file.
 #include <cstring>
 #include <new>
@@ -6,6 +7,7 @@
 #include <pednav/pn_engine.h>
 
 #include "engine.hpp"
+#include "geo_frame.hpp"
 
 using pednav::engine::ConfigProblem;
 using pednav::engine::Engine;
@@ -114,6 +116,9 @@ pn_status_t pn_engine_push_imu(pn_engine_t* engine, const pn_imu_t* samples, siz
                 if (err && err->struct_size >= sizeof(pn_error_t)) err->detail = static_cast<int32_t>(i);
                 return s;
             }
+        } catch (const std::bad_alloc&) {
+            set_error(err, PN_E_OUT_OF_MEMORY, "engine", "out of memory", static_cast<int32_t>(i));
+            return PN_E_OUT_OF_MEMORY;
         } catch (const std::exception& e) {
             set_error(err, PN_E_INTERNAL, "engine", e.what(), static_cast<int32_t>(i));
             return PN_E_INTERNAL;
@@ -129,6 +134,9 @@ pn_status_t pn_engine_push(pn_engine_t* engine, const pn_record_header_t* record
     }
     try {
         return engine->engine.push(record, err);
+    } catch (const std::bad_alloc&) {
+        set_error(err, PN_E_OUT_OF_MEMORY, "engine", "out of memory");
+        return PN_E_OUT_OF_MEMORY;
     } catch (const std::exception& e) {
         set_error(err, PN_E_INTERNAL, "engine", e.what());
         return PN_E_INTERNAL;
@@ -142,6 +150,9 @@ pn_status_t pn_engine_push(pn_engine_t* engine, const pn_record_header_t* record
     }                                                                      \
     try {                                                                  \
         return call;                                                       \
+    } catch (const std::bad_alloc&) {                                      \
+        set_error(err, PN_E_OUT_OF_MEMORY, "engine", "out of memory");     \
+        return PN_E_OUT_OF_MEMORY;                                         \
     } catch (const std::exception& e) {                                    \
         set_error(err, PN_E_INTERNAL, "engine", e.what());                 \
         return PN_E_INTERNAL;                                              \
@@ -151,6 +162,54 @@ pn_status_t pn_engine_flush(pn_engine_t* engine, pn_error_t* err) { PN_GUARDED("
 pn_status_t pn_engine_reset(pn_engine_t* engine, pn_error_t* err) { PN_GUARDED("reset", engine->engine.reset(err)) }
 pn_status_t pn_engine_set_start(pn_engine_t* engine, const double pos_enu_m[3], double heading_deg, pn_error_t* err) {
     PN_GUARDED("set_start", engine->engine.set_start(pos_enu_m, heading_deg, err))
+}
+pn_status_t pn_engine_set_attitude(pn_engine_t* engine, const double q_enu_from_body[4], pn_error_t* err) {
+    PN_GUARDED("set_attitude", engine->engine.set_attitude(q_enu_from_body, err))
+}
+pn_status_t pn_engine_set_origin(pn_engine_t* engine, const pn_geo_point_t* origin, pn_error_t* err) {
+    if (!origin) {
+        set_error(err, PN_E_INVALID_ARGUMENT, "origin", "origin is NULL");
+        return PN_E_INVALID_ARGUMENT;
+    }
+    PN_GUARDED("set_origin", engine->engine.set_origin(*origin, err))
+}
+pn_status_t pn_engine_load_map(pn_engine_t* engine, const char* format, const void* bytes, size_t size,
+                               pn_error_t* err) {
+    PN_GUARDED("load_map", engine->engine.load_map(format ? format : "", bytes, size, err))
+}
+pn_status_t pn_engine_reconfigure(pn_engine_t* engine, const char* stage, const char* params_json, size_t params_len,
+                                  pn_error_t* err) {
+    if (!stage || !params_json) {
+        set_error(err, PN_E_INVALID_ARGUMENT, "reconfigure", "stage or params_json is NULL");
+        return PN_E_INVALID_ARGUMENT;
+    }
+    PN_GUARDED("reconfigure",
+               engine->engine.reconfigure(stage, params_len ? std::string(params_json, params_len) : std::string(params_json),
+                                          err))
+}
+
+pn_status_t pn_engine_get_origin(const pn_engine_t* engine, pn_geo_point_t* origin) {
+    if (!engine || !origin) return PN_E_INVALID_ARGUMENT;
+    const auto& o = engine->engine.origin();
+    if (!o.known()) return PN_NO_DATA;
+    *origin = o.point();
+    return PN_OK;
+}
+
+pn_status_t pn_engine_geo_from_enu(const pn_engine_t* engine, const double pos_enu_m[3], pn_geo_point_t* out) {
+    if (!engine || !pos_enu_m || !out) return PN_E_INVALID_ARGUMENT;
+    const auto& o = engine->engine.origin();
+    if (!o.known()) return PN_NO_DATA;
+    *out = pednav::engine::geo_from_enu(o.point(), pos_enu_m);
+    return PN_OK;
+}
+
+pn_status_t pn_engine_enu_from_geo(const pn_engine_t* engine, const pn_geo_point_t* point, double pos_enu_m[3]) {
+    if (!engine || !point || !pos_enu_m) return PN_E_INVALID_ARGUMENT;
+    const auto& o = engine->engine.origin();
+    if (!o.known()) return PN_NO_DATA;
+    pednav::engine::enu_from_geo(o.point(), *point, pos_enu_m);
+    return PN_OK;
 }
 
 pn_status_t pn_engine_poll(pn_engine_t* engine, pn_output_t* out) {
@@ -165,8 +224,7 @@ pn_status_t pn_engine_get_latest(pn_engine_t* engine, pn_record_type_t type, pn_
 
 pn_status_t pn_engine_set_output_mask(pn_engine_t* engine, uint64_t mask) {
     if (!engine) return PN_E_INVALID_ARGUMENT;
-    engine->engine.scheduler().set_output_mask(mask);
-    return PN_OK;
+    return engine->engine.set_output_mask(mask);
 }
 
 int64_t pn_engine_latency_ns(const pn_engine_t* engine) {

@@ -44,6 +44,46 @@ StageConfig parse_stage(const nlohmann::json& j, Role role, const std::string& w
     return s;
 }
 
+double number_in(const nlohmann::json& obj, const char* key, const std::string& where, double min, double max,
+                 const char* unit) {
+    const auto& v = obj.at(key);
+    if (!v.is_number() || !(v.get<double>() >= min && v.get<double>() <= max))
+        fail(where + "/" + key, std::string("\"") + key + "\" must be a number of " + unit + " in [" +
+                                    nlohmann::json(min).dump() + ", " + nlohmann::json(max).dump() + "]");
+    return v.get<double>();
+}
+
+void parse_origin(const nlohmann::json& o, EngineConfig& cfg) {
+    if (!o.is_object())
+        fail("/origin", "\"origin\" must be an object: {\"lat_deg\", \"lon_deg\", \"height_m\"} and/or "
+                        "{\"from_fix_max_h_accuracy_m\"}");
+    check_keys(o, "/origin", {"lat_deg", "lon_deg", "height_m", "from_fix_max_h_accuracy_m"});
+    const bool lat = o.contains("lat_deg"), lon = o.contains("lon_deg");
+    if (lat != lon) fail(lat ? "/origin/lon_deg" : "/origin/lat_deg", "an origin needs both lat_deg and lon_deg");
+    if (o.contains("height_m") && !lat) fail("/origin/height_m", "height_m needs lat_deg and lon_deg");
+    if (lat) {
+        cfg.has_origin = true;
+        cfg.origin.lat_deg = number_in(o, "lat_deg", "/origin", -90.0, 90.0, "degrees");
+        cfg.origin.lon_deg = number_in(o, "lon_deg", "/origin", -180.0, 180.0, "degrees");
+        cfg.origin.height_m = o.contains("height_m") ? number_in(o, "height_m", "/origin", -1e5, 1e5, "metres") : 0.0;
+    }
+    if (o.contains("from_fix_max_h_accuracy_m"))
+        cfg.origin_fix_max_h_accuracy_m = number_in(o, "from_fix_max_h_accuracy_m", "/origin", 0.0, 1e6, "metres");
+}
+
+void parse_map(const nlohmann::json& m, EngineConfig& cfg) {
+    if (!m.is_object()) fail("/map", "\"map\" must be an object: {\"path\": FILE, \"format\": \"pednav.map/1\"}");
+    check_keys(m, "/map", {"path", "format"});
+    auto path = m.find("path");
+    if (path == m.end() || !path->is_string() || path->get<std::string>().empty())
+        fail("/map/path", "\"path\" must name the map file");
+    cfg.map_path = path->get<std::string>();
+    if (auto f = m.find("format"); f != m.end()) {
+        if (!f->is_string() || f->get<std::string>().empty()) fail("/map/format", "\"format\" must be a map format id");
+        cfg.map_format = f->get<std::string>();
+    }
+}
+
 }  // namespace
 
 EngineConfig parse_config(const std::string& text) {
@@ -54,7 +94,7 @@ EngineConfig parse_config(const std::string& text) {
         fail("", std::string("config is not valid JSON: ") + e.what());
     }
     if (!doc.is_object()) fail("", "config must be a JSON object");
-    check_keys(doc, "", {"format", "mount", "imu_rate_hz", "pipelines", "description", "input"});
+    check_keys(doc, "", {"format", "mount", "imu_rate_hz", "pipelines", "description", "input", "origin", "map"});
     // "input" configures the file readers of the tools (format, column map);
     // the engine itself does not read files, but checks it like every key.
     if (auto in = doc.find("input"); in != doc.end()) {
@@ -70,11 +110,14 @@ EngineConfig parse_config(const std::string& text) {
         fail("/format", "\"format\" must be \"pednav-config/1\"");
 
     EngineConfig cfg;
+    std::string mounts;
+    for (const char* m : kMounts) mounts += (mounts.empty() ? "" : ", ") + std::string(m);
     auto m = doc.find("mount");
-    if (m == doc.end() || !m->is_string()) fail("/mount", "\"mount\" must be \"foot\", \"chest\" or \"waist\"");
+    if (m == doc.end() || !m->is_string()) fail("/mount", "\"mount\" must be one of " + mounts);
     cfg.mount = m->get<std::string>();
-    if (cfg.mount != "foot" && cfg.mount != "chest" && cfg.mount != "waist")
-        fail("/mount", "mount \"" + cfg.mount + "\" is not one of foot, chest, waist");
+    bool known_mount = false;
+    for (const char* k : kMounts) known_mount = known_mount || cfg.mount == k;
+    if (!known_mount) fail("/mount", "mount \"" + cfg.mount + "\" is not one of " + mounts);
     if (auto r = doc.find("imu_rate_hz"); r != doc.end()) {
         if (!r->is_number() || r->get<double>() < 0 || r->get<double>() > 100000)
             fail("/imu_rate_hz", "\"imu_rate_hz\" must be a number of Hz in [0, 100000]");
@@ -82,7 +125,7 @@ EngineConfig parse_config(const std::string& text) {
     }
     auto pipelines = doc.find("pipelines");
     if (pipelines == doc.end() || !pipelines->is_object()) fail("/pipelines", "\"pipelines\" must be an object keyed by mount");
-    check_keys(*pipelines, "/pipelines", {"foot", "chest", "waist"});
+    check_keys(*pipelines, "/pipelines", {"foot", "chest", "handheld", "waist"});
     auto pipe = pipelines->find(cfg.mount);
     if (pipe == pipelines->end())
         throw ConfigProblem{PN_E_NOT_FOUND, "/pipelines/" + cfg.mount, "the config has no pipeline for mount " + cfg.mount};
@@ -95,6 +138,8 @@ EngineConfig parse_config(const std::string& text) {
         if (s != pipe->end()) cfg.stages.push_back(parse_stage(*s, role, base + "/" + role_name(role)));
     }
     if (cfg.stages.empty()) fail(base, "the pipeline for " + cfg.mount + " has no stage");
+    if (auto o = doc.find("origin"); o != doc.end()) parse_origin(*o, cfg);
+    if (auto map = doc.find("map"); map != doc.end()) parse_map(*map, cfg);
     return cfg;
 }
 

@@ -23,10 +23,23 @@ struct StageConfig {
 };
 
 struct EngineConfig {
-    std::string mount;               // "foot", "chest" or "waist"
+    std::string mount;               // one of kMounts
     double imu_rate_hz = 0.0;        // nominal, 0 = unknown
     std::vector<StageConfig> stages; // of the selected mount, in role order
+
+    // "origin": a fixed geodetic origin, or the accuracy a GNSS fix needs to
+    // become the origin when none is given (0 = never).
+    bool has_origin = false;
+    pn_geo_point_t origin{0.0, 0.0, 0.0};
+    double origin_fix_max_h_accuracy_m = 10.0;
+
+    // "map": a map file the engine reads and gives the map matcher at create.
+    std::string map_path;            // empty: none
+    std::string map_format = "pednav.map/1";
 };
+
+// The mounts a config may name, in the order the docs list them.
+constexpr const char* kMounts[] = {"foot", "chest", "handheld", "waist"};
 
 // Thrown with the status, the JSON pointer of the key at fault and a message.
 struct ConfigProblem {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Engine::describe_json: what was loaded, refused and wired, as JSON.
 #include <nlohmann/json.hpp>
 
@@ -87,12 +88,25 @@ std::string Engine::describe_json() const {
                      {"latency_ns", scheduler_->latency_ns()},
                      {"stages", stages},
                      {"feedback", feedback}};
+    uint64_t failures = 0;
+    for (const auto& s : scheduler_->stages()) failures += s->failures;
     j["counters"] = {{"records_in", scheduler_->records_in()},
                      {"rejected_inputs", rejected_inputs_},
+                     {"plugin_failures", failures},
                      {"outputs_queued", scheduler_->outputs().size()},
                      {"outputs_dropped", scheduler_->outputs().dropped()},
-                     {"warnings", scheduler_->warning_count()}};
-    j["warnings"] = scheduler_->warnings();
+                     {"warnings", diagnostics_.warning_count()}};
+    j["warnings"] = diagnostics_.warnings();
+    j["origin"] = nullptr;
+    if (origin_.known()) {
+        const pn_geo_point_t& o = origin_.point();
+        j["origin"] = {{"lat_deg", o.lat_deg}, {"lon_deg", o.lon_deg}, {"height_m", o.height_m},
+                       {"from", GeoOrigin::source_name(origin_.source())}};
+        if (origin_.source() == GeoOrigin::Source::plugin) j["origin"]["given_by"] = origin_.given_by();
+    }
+    j["map"] = nullptr;
+    if (!map_.format.empty())
+        j["map"] = {{"format", map_.format}, {"bytes", map_.bytes.size()}, {"from", map_.label}};
     return j.dump(2);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "engine.hpp"
 
 #include <algorithm>
@@ -6,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "pipeline_check.hpp"
 #include "record_checks.hpp"
 
 namespace pednav::engine {
@@ -28,13 +30,6 @@ void set_error(pn_error_t* err, pn_status_t code, const std::string& where, cons
 
 namespace {
 
-void host_log(const pnp_host_t* host, pnp_log_level_t level, const char* msg) noexcept {
-    const Stage* s = static_cast<const Stage*>(host->host_data);
-    const Engine* e = static_cast<const Engine*>(s->owner);
-    if (level >= PNP_LOG_WARN) s->scheduler->warn(s->instance_name + ": " + (msg ? msg : ""));
-    e->log(level, s->instance_name.c_str(), msg ? msg : "");
-}
-
 Role role_for_kind(pnp_kind_t kind) {
     switch (kind) {
         case PNP_KIND_STEP_DETECTOR: return Role::step_detector;
@@ -51,33 +46,40 @@ std::string available_ids(const Loader& loader, Role role) {
     return list.empty() ? "none" : list;
 }
 
+std::string config_text(const pn_engine_create_info_t& info) {
+    return info.config_len ? std::string(info.config_json, info.config_len)
+                           : std::string(info.config_json ? info.config_json : "");
+}
+
 }  // namespace
 
-Engine::Engine(const pn_engine_create_info_t& info) : loader_(std::make_unique<Loader>()) {
+Engine::Engine(const pn_engine_create_info_t& info)
+    : diagnostics_(info.log, info.log_user), loader_(std::make_unique<Loader>()) {
     for (auto& t : last_t_ns_) t = INT64_MIN;
-    log_ = info.log;
-    log_user_ = info.log_user;
+    if (info.output_queue_capacity > PN_OUTPUT_QUEUE_MAX)
+        throw ConfigProblem{PN_E_INVALID_ARGUMENT, "create_info",
+                            "output_queue_capacity " + std::to_string(info.output_queue_capacity) +
+                                " is above PN_OUTPUT_QUEUE_MAX (" + std::to_string(PN_OUTPUT_QUEUE_MAX) + ")"};
+    config_ = parse_config(config_text(info));
+    if (config_.has_origin) origin_.set(config_.origin, GeoOrigin::Source::config);
+
     for (uint32_t i = 0; i < info.plugin_dir_count; ++i)
         if (info.plugin_dirs && info.plugin_dirs[i]) loader_->scan_directory(info.plugin_dirs[i]);
     for (uint32_t i = 0; i < info.static_library_count; ++i)
         if (info.static_libraries) loader_->add_static_library(info.static_libraries[i], "<static:" + std::to_string(i) + ">");
     for (const auto& r : loader_->rejected())
-        log(PNP_LOG_WARN, "engine", ("rejected plugin file " + r.path + ": " + r.reason).c_str());
+        diagnostics_.log(PNP_LOG_WARN, "engine", ("rejected plugin file " + r.path + ": " + r.reason).c_str());
 
-    const std::string text = info.config_len ? std::string(info.config_json, info.config_len)
-                                             : std::string(info.config_json ? info.config_json : "");
-    config_ = parse_config(text);
+    std::vector<std::unique_ptr<Stage>> stages = plan_stages();
+    check_pipeline_needs(stages);
+    create_instances(stages);
+    scheduler_ = std::make_unique<Scheduler>(std::move(stages), info.output_queue_capacity, diagnostics_);
+    if (!config_.map_path.empty()) load_config_map();
+}
 
+// One Stage per configured role, with its descriptor; no plugin code runs yet.
+std::vector<std::unique_ptr<Stage>> Engine::plan_stages() {
     std::vector<std::unique_ptr<Stage>> stages;
-    struct Destroyer {  // destroys instances created so far if a later one fails
-        std::vector<std::unique_ptr<Stage>>& v;
-        bool armed = true;
-        ~Destroyer() {
-            if (armed)
-                for (auto& s : v)
-                    if (s->self) s->ops->destroy(s->self);
-        }
-    } guard{stages};
     for (const StageConfig& sc : config_.stages) {
         const AvailablePlugin* p = loader_->find(sc.plugin_id);
         if (!p) {
@@ -96,16 +98,39 @@ Engine::Engine(const pn_engine_create_info_t& info) : loader_(std::make_unique<L
         stage->role = sc.role;
         stage->instance_name = config_.mount + "/" + role_name(sc.role);
         stage->plugin_id = sc.plugin_id;
+        stage->pointer = sc.pointer;
         stage->descriptor = d;
         stage->ops = d->ops;
-        stage->owner = this;
-        stage->host.abi_version = PN_ABI_VERSION;
-        stage->host.struct_size = sizeof(pnp_host_t);
-        stage->host.host_data = stage.get();
-        stage->host.log = &host_log;
+        stage->host_context.source = stage->instance_name;
+        stage->host_context.diagnostics = &diagnostics_;
+        stage->host_context.origin = &origin_;
+        init_host(&stage->host_context);
+        stages.push_back(std::move(stage));
+    }
+    return stages;
+}
+
+// Initialises each library (once) and creates the instances in role order.
+// On a throw the stages, and so the instances made so far, are destroyed.
+void Engine::create_instances(std::vector<std::unique_ptr<Stage>>& stages) {
+    for (size_t k = 0; k < stages.size(); ++k) {
+        Stage& stage = *stages[k];
+        const StageConfig& sc = config_.stages[k];
+        const AvailablePlugin* p = loader_->find(sc.plugin_id);
+        const LoadedLibrary& lib = loader_->libraries()[p->library_index];
         pn_error_t err{};
         err.struct_size = sizeof err;
-        if (PN_FAILED(loader_->ensure_init(p->library_index, &stage->host, &err)))
+        const pnp_host_t* library_host = nullptr;  // what the library's init gets, if it runs now
+        if (lib.init_count == 0) {
+            auto host = std::make_unique<HostContext>();
+            host->source = lib.library->id && *lib.library->id ? lib.library->id : lib.path;
+            host->diagnostics = &diagnostics_;
+            host->origin = &origin_;
+            init_host(host.get());
+            library_host = &host->host;
+            library_hosts_.push_back(std::move(host));
+        }
+        if (PN_FAILED(loader_->ensure_init(p->library_index, library_host, &err)))
             throw ConfigProblem{err.code ? err.code : PN_E_INTERNAL, sc.pointer + "/plugin",
                                 "library of " + sc.plugin_id + " refused to initialise: " + err.message};
         pnp_create_info_t ci{};
@@ -113,29 +138,22 @@ Engine::Engine(const pn_engine_create_info_t& info) : loader_(std::make_unique<L
         ci.struct_size = sizeof ci;
         ci.params_json = sc.params_json.c_str();
         ci.params_len = static_cast<uint32_t>(sc.params_json.size());
-        ci.instance_name = stage->instance_name.c_str();
+        ci.instance_name = stage.instance_name.c_str();
         ci.mount = config_.mount.c_str();
         ci.imu_rate_hz = config_.imu_rate_hz;
-        const pn_status_t st = d->create(d, &stage->host, &ci, &stage->self, &err);
-        if (PN_FAILED(st) || !stage->self) {
+        const pn_status_t st = stage.descriptor->create(stage.descriptor, &stage.host_context.host, &ci, &stage.self, &err);
+        if (PN_FAILED(st) || !stage.self) {
             const std::string inner = err.where;
             throw ConfigProblem{PN_FAILED(st) ? st : PN_E_INTERNAL,
                                 sc.pointer + "/params" + (inner.rfind('/', 0) == 0 ? inner : std::string()),
                                 sc.plugin_id + " rejected its params: " + (err.message[0] ? err.message : "no reason given")};
         }
-        stages.push_back(std::move(stage));
     }
-    guard.armed = false;
-    scheduler_ = std::make_unique<Scheduler>(std::move(stages), info.output_queue_capacity);
 }
 
 Engine::~Engine() {
     scheduler_.reset();  // instances before libraries
     loader_.reset();
-}
-
-void Engine::log(int32_t level, const char* source, const char* msg) const {
-    if (log_) log_(log_user_, level, source, msg);
 }
 
 pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
@@ -174,7 +192,6 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
 
 pn_status_t Engine::report_stage_failure(pn_error_t* err) {
     StageFailure f = scheduler_->take_failure();
-    log(PNP_LOG_ERROR, f.where.c_str(), f.message.c_str());
     set_error(err, f.status, f.where, f.message);
     return f.status;
 }
@@ -187,8 +204,23 @@ pn_status_t Engine::push(const pn_record_header_t* r, pn_error_t* err) {
     }
     last_t_ns_[r->type] = r->t_ns;
     last_any_t_ns_ = r->t_ns;
+    pushed_ = true;
+    if (r->type == PN_REC_GNSS && !origin_.known()) take_origin_from_fix(*reinterpret_cast<const pn_gnss_t*>(r));
     scheduler_->push(r);
     return stage_failure_status(err);
+}
+
+// The first fix accurate enough becomes the origin when nothing else gave one.
+void Engine::take_origin_from_fix(const pn_gnss_t& fix) {
+    const double limit = config_.origin_fix_max_h_accuracy_m;
+    if (!(fix.h_accuracy_m > 0.0 && fix.h_accuracy_m <= limit)) return;
+    const pn_geo_point_t p{fix.lat_deg, fix.lon_deg, fix.height_m};
+    if (!GeoOrigin::valid(p)) return;
+    origin_.set(p, GeoOrigin::Source::gnss_fix);
+    char msg[160];
+    std::snprintf(msg, sizeof msg, "geodetic origin taken from the GNSS fix at t=%.3f s: %.8f, %.8f deg, %.2f m",
+                  static_cast<double>(fix.header.t_ns) * 1e-9, p.lat_deg, p.lon_deg, p.height_m);
+    diagnostics_.log(PNP_LOG_INFO, "engine", msg);
 }
 
 pn_status_t Engine::flush(pn_error_t* err) {
@@ -199,38 +231,11 @@ pn_status_t Engine::flush(pn_error_t* err) {
 pn_status_t Engine::reset(pn_error_t* err) {
     for (auto& t : last_t_ns_) t = INT64_MIN;
     last_any_t_ns_ = INT64_MIN;
-    return scheduler_->reset(err);
-}
-
-pn_status_t Engine::set_start(const double pos_enu_m[3], double heading_deg, pn_error_t* err) {
-    const double zero[3] = {0, 0, 0};
-    const double* pos = pos_enu_m ? pos_enu_m : zero;
-    for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(pos[i])) {
-            set_error(err, PN_E_INVALID_ARGUMENT, "start", "start position must be finite");
-            return PN_E_INVALID_ARGUMENT;
-        }
-    const double heading_rad = std::isnan(heading_deg) ? NAN : heading_deg * M_PI / 180.0;
-    bool accepted = false;
-    for (const auto& s : scheduler_->stages()) {
-        pn_status_t st = PN_E_UNSUPPORTED;
-        if (s->role == Role::position_filter) {
-            auto* ops = reinterpret_cast<const pnp_position_filter_ops_t*>(s->ops);
-            if (PNP_HAS_KIND_SLOT(ops, pnp_position_filter_ops_t, set_start)) st = ops->set_start(s->self, pos, heading_rad, err);
-        } else if (s->role == Role::map_matcher) {
-            auto* ops = reinterpret_cast<const pnp_map_matcher_ops_t*>(s->ops);
-            if (PNP_HAS_KIND_SLOT(ops, pnp_map_matcher_ops_t, set_start)) st = ops->set_start(s->self, pos, heading_rad, err);
-        } else {
-            continue;
-        }
-        if (st == PN_OK) accepted = true;
-        else if (st != PN_E_UNSUPPORTED) return st;
-    }
-    if (!accepted) {
-        set_error(err, PN_E_UNSUPPORTED, "start", "no stage of this pipeline accepts a start point");
-        return PN_E_UNSUPPORTED;
-    }
-    return PN_OK;
+    pushed_ = false;
+    origin_.forget_derived();
+    const pn_status_t st = scheduler_->reset(err);
+    if (PN_FAILED(st)) return st;
+    return reapply_settings(err);
 }
 
 }  // namespace pednav::engine

@@ -144,13 +144,19 @@ ValueProblem find_value_problem(const pn_record_header_t* h) {
     return p;
 }
 
-std::string describe(const ValueProblem& p) {
-    if (!p) return {};
+void format_value_problem(const ValueProblem& p, char* buffer, size_t capacity) {
+    if (!capacity) return;
+    buffer[0] = '\0';
+    if (!p) return;
     char index[16] = "";
     if (p.index >= 0) std::snprintf(index, sizeof index, "[%d]", p.index);
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "%s%s is %g%s%s", p.field, index, p.value, p.problem ? " " : "",
+    std::snprintf(buffer, capacity, "%s%s is %g%s%s", p.field, index, p.value, p.problem ? " " : "",
                   p.problem ? p.problem : "");
+}
+
+std::string describe(const ValueProblem& p) {
+    char buf[160];
+    format_value_problem(p, buf, sizeof buf);
     return buf;
 }
 

@@ -21,7 +21,8 @@ constexpr double kUnitQuaternionTolerance = 1e-3;
 // The first value of a record a consumer could not rely on: not finite, or out
 // of physical range (covariance diagonals non-negative, quaternions of unit
 // norm, pressure positive, latitude and longitude in range). Nothing in it is
-// allocated; the text is made by describe() only for a refused record.
+// allocated; the text is made by describe() or format_value_problem() only
+// for a refused record.
 struct ValueProblem {
     const char* field = nullptr;    // nullptr: every value is fine
     int index = -1;                 // element of an array field, -1 for a scalar
@@ -37,5 +38,7 @@ ValueProblem find_value_problem(const pn_record_header_t* record);
 bool record_values_ok(const pn_record_header_t* record);
 // "accel_mps2[2] is nan", "cov_enu_m2[4] is -1 (negative variance)"; empty when fine.
 std::string describe(const ValueProblem& problem);
+// The same text into a caller's buffer, without allocating (the sink's path).
+void format_value_problem(const ValueProblem& problem, char* buffer, size_t capacity);
 
 }  // namespace pednav::engine

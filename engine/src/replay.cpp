@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include <pednav_engine/replay.hpp>
 
 #include <cstring>
@@ -112,6 +113,8 @@ ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_rec
     collect(engine.get(), result);
     if (options.progress) options.progress(total, total, options.progress_user);
     result.describe_json = describe(engine.get());
+    const auto d = nlohmann::json::parse(result.describe_json, nullptr, false);
+    if (!d.is_discarded()) result.plugin_failures = d["counters"].value("plugin_failures", uint64_t{0});
     return result;
 }
 

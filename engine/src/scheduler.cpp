@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <new>
 
 #include "record_checks.hpp"
 
@@ -11,7 +12,6 @@ namespace {
 
 constexpr int64_t kInf = INT64_MAX;
 constexpr uint32_t kMaxBatch = 32;
-constexpr size_t kMaxWarningsKept = 200;
 
 int64_t saturating_sub(int64_t a, int64_t b) {
     if (a == kInf) return kInf;
@@ -21,34 +21,54 @@ int64_t saturating_sub(int64_t a, int64_t b) {
 
 pn_status_t sink_emit(const pnp_sink_t* sink, const pn_record_header_t* record) noexcept {
     Stage* s = static_cast<Stage*>(sink->sink_data);
-    return s->scheduler->accept(*s, record);
+    try {
+        return s->scheduler->accept(*s, record);
+    } catch (const std::bad_alloc&) {  // a queue could not grow
+        std::snprintf(s->sink_problem, sizeof s->sink_problem, "no memory to queue its output");
+        return PN_E_OUT_OF_MEMORY;
+    }
 }
 
-std::string seconds(int64_t t_ns) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "t=%.6f s", static_cast<double>(t_ns) * 1e-9);
-    return buf;
-}
+double seconds(int64_t t_ns) { return static_cast<double>(t_ns) * 1e-9; }
 
 }  // namespace
 
-Scheduler::Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity)
+void Stage::clear_segment() {
+    flushed = false;
+    last_stored_t_ns = INT64_MIN;
+    last_input_t_ns = INT64_MIN;
+    for (auto& t : last_emitted_t_ns) t = INT64_MIN;
+    for (auto& in : forward) in.cursor = 0;
+    for (auto& in : feedback) in.cursor = 0;
+}
+
+Scheduler::Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity, Diagnostics& diagnostics)
     : stages_(std::move(stages)),
       outputs_(output_capacity),
-      output_mask_(PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_STEP)) {
+      output_mask_(PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_STEP)),
+      diagnostics_(diagnostics) {
     for (size_t k = 0; k < stages_.size(); ++k) {
         Stage& s = *stages_[k];
         s.scheduler = this;
         s.index = static_cast<int>(k);
         s.sink.sink_data = &s;
         s.sink.emit = &sink_emit;
+        s.clear_segment();
     }
     wire();
 }
 
-Scheduler::~Scheduler() {
-    for (auto& s : stages_)
-        if (s->self) s->ops->destroy(s->self);
+int64_t Scheduler::checked_latency(const Stage& s) const {
+    if (!PNP_HAS_SLOT(s.ops, pnp_node_ops_t, latency_ns)) return 0;
+    const int64_t l = s.ops->latency_ns(s.self);
+    if (l < 0 || l > kMaxLatencyNs) {
+        char msg[200];
+        std::snprintf(msg, sizeof msg, "%s (%s) declares a look-ahead of %.9g s, outside [0, %.0f] s",
+                      s.instance_name.c_str(), s.plugin_id.c_str(), static_cast<double>(l) * 1e-9,
+                      static_cast<double>(kMaxLatencyNs) * 1e-9);
+        throw ConfigProblem{PN_E_INVALID_CONFIG, s.pointer, msg};
+    }
+    return l;
 }
 
 void Scheduler::wire() {
@@ -75,9 +95,7 @@ void Scheduler::wire() {
         final_producer_mask_[k] = p & ~seen;
         seen |= p;
     }
-    for (auto& s : stages_) s->latency_ns = PNP_HAS_SLOT(s->ops, pnp_node_ops_t, latency_ns)
-                                                ? std::max<int64_t>(0, s->ops->latency_ns(s->self))
-                                                : 0;
+    for (auto& s : stages_) s->latency_ns = checked_latency(*s);
 }
 
 int64_t Scheduler::latency_ns() const {
@@ -86,50 +104,63 @@ int64_t Scheduler::latency_ns() const {
     return sum;
 }
 
-void Scheduler::warn(const std::string& message) {
-    ++warning_count_;
-    if (warnings_.size() < kMaxWarningsKept) warnings_.push_back(message);
+pn_status_t Scheduler::refuse(Stage& s, pn_status_t status) {
+    char line[320];
+    std::snprintf(line, sizeof line, "misbehaving: %s", s.sink_problem);
+    diagnostics_.warn(s.instance_name.c_str(), line);
+    return status;
 }
 
+// The sink. Every check writes its reason into fixed storage: nothing here
+// allocates but a queue that grows (which sink_emit catches).
 pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
+    char* why = s.sink_problem;
+    const size_t n = sizeof s.sink_problem;
     if (!r) {
-        s.sink_problem = "emitted a NULL record";
-        return PN_E_INVALID_ARGUMENT;
+        std::snprintf(why, n, "emitted a NULL record");
+        return refuse(s, PN_E_INVALID_ARGUMENT);
     }
     const uint32_t min_size = min_record_size(r->type);
     if (min_size == 0 || !(s.descriptor->produces & PN_REC_MASK(r->type))) {
-        s.sink_problem = "emitted a record of type " + std::to_string(r->type) + " (" +
-                         record_type_name(r->type) + ") that its descriptor does not declare in produces";
-        warn(s.instance_name + " misbehaving: " + s.sink_problem);
-        return PN_E_INVALID_ARGUMENT;
+        std::snprintf(why, n, "emitted a record of type %u (%s) that its descriptor does not declare in produces",
+                      r->type, record_type_name(r->type));
+        return refuse(s, PN_E_INVALID_ARGUMENT);
     }
     if (r->struct_size < min_size || r->struct_size > PN_RECORD_MAX_SIZE) {
-        s.sink_problem = std::string("emitted a ") + record_type_name(r->type) + " record with struct_size " +
-                         std::to_string(r->struct_size);
-        warn(s.instance_name + " misbehaving: " + s.sink_problem);
-        return PN_E_INVALID_ARGUMENT;
+        std::snprintf(why, n, "emitted a %s record with struct_size %u", record_type_name(r->type), r->struct_size);
+        return refuse(s, PN_E_INVALID_ARGUMENT);
     }
     if (!record_values_ok(r)) {
-        s.sink_problem = std::string("emitted a ") + record_type_name(r->type) + " record at " + seconds(r->t_ns) +
-                         " whose " + describe(find_value_problem(r));
-        warn(s.instance_name + " misbehaving: " + s.sink_problem);
-        return PN_E_NUMERIC;
+        char value[128];
+        format_value_problem(find_value_problem(r), value, sizeof value);
+        std::snprintf(why, n, "emitted a %s record at t=%.6f s whose %s", record_type_name(r->type), seconds(r->t_ns),
+                      value);
+        return refuse(s, PN_E_NUMERIC);
+    }
+    // Time order per type, whoever reads the type (a later stage or only the
+    // app); and over every type the stage's queue holds, which later stages
+    // merge by time.
+    int64_t& last_of_type = s.last_emitted_t_ns[r->type];
+    if (r->t_ns < last_of_type) {
+        std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous %s at t=%.6f s",
+                      record_type_name(r->type), seconds(r->t_ns), record_type_name(r->type), seconds(last_of_type));
+        return refuse(s, PN_E_OUT_OF_ORDER);
     }
     const uint64_t bit = PN_REC_MASK(r->type);
     const int q = s.index + 1;
     if (queue_wanted_[q] & bit) {
         if (r->t_ns < s.last_stored_t_ns) {
-            s.sink_problem = std::string("emitted a ") + record_type_name(r->type) + " record at " +
-                             seconds(r->t_ns) + ", before its previous output at " + seconds(s.last_stored_t_ns);
-            warn(s.instance_name + " misbehaving: " + s.sink_problem);
-            return PN_E_OUT_OF_ORDER;
+            std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous output at t=%.6f s",
+                          record_type_name(r->type), seconds(r->t_ns), seconds(s.last_stored_t_ns));
+            return refuse(s, PN_E_OUT_OF_ORDER);
         }
         s.last_stored_t_ns = r->t_ns;
         queues_[q].push(r);
         auto* stored = const_cast<pn_record_header_t*>(queues_[q].at(queues_[q].end() - 1));
         stored->source_id = static_cast<uint32_t>(q);
     }
-    if (final_producer_mask_[s.index] & output_mask_ & bit) outputs_.push(r, static_cast<uint32_t>(q));
+    last_of_type = r->t_ns;
+    if (final_producer_mask_[s.index] & output_mask() & bit) outputs_.push(r, static_cast<uint32_t>(q));
     ++s.records_out;
     return PN_OK;
 }
@@ -167,16 +198,19 @@ pn_status_t Scheduler::reset(pn_error_t* err) {
     for (auto& s : stages_) {
         const pn_status_t st = s->ops->reset(s->self, err);
         if (PN_FAILED(st)) return st;
-        s->flushed = false;
-        s->last_stored_t_ns = INT64_MIN;
-        s->last_input_t_ns = INT64_MIN;
-        for (auto& in : s->forward) in.cursor = 0;
-        for (auto& in : s->feedback) in.cursor = 0;
+        s->clear_segment();
     }
     for (auto& q : queues_) q = RecordQueue(q.capacity());
-    for (auto& s : stages_)
-        if (PNP_HAS_SLOT(s->ops, pnp_node_ops_t, latency_ns))
-            s->latency_ns = std::max<int64_t>(0, s->ops->latency_ns(s->self));
+    for (auto& s : stages_) {
+        const int64_t l = PNP_HAS_SLOT(s->ops, pnp_node_ops_t, latency_ns) ? s->ops->latency_ns(s->self) : 0;
+        if (l != s->latency_ns) {  // the contract: fixed from create to destroy
+            char msg[160];
+            std::snprintf(msg, sizeof msg, "misbehaving: its look-ahead changed across reset (%.9g s to %.9g s); kept %.9g s",
+                          static_cast<double>(s->latency_ns) * 1e-9, static_cast<double>(l) * 1e-9,
+                          static_cast<double>(s->latency_ns) * 1e-9);
+            diagnostics_.warn(s->instance_name.c_str(), msg);
+        }
+    }
     outputs_.clear();
     app_limit_ns_ = INT64_MIN;
     last_app_t_ns_ = INT64_MIN;
@@ -250,10 +284,10 @@ void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records,
 
 void Scheduler::report_failure(Stage& s, pn_status_t status, const pn_error_t& err, const char* during) {
     ++s.failures;
-    std::string msg = s.instance_name + " (" + s.plugin_id + ") failed in " + during + ": ";
+    std::string msg = "(" + s.plugin_id + ") failed in " + during + ": ";
     msg += err.message[0] ? err.message : "no message";
-    if (!s.sink_problem.empty()) msg += "; the engine refused its output: " + s.sink_problem;
-    s.sink_problem.clear();
+    if (s.sink_problem[0]) msg += std::string("; the engine refused its output: ") + s.sink_problem;
+    s.sink_problem[0] = '\0';
     if (status == PN_E_NUMERIC || status == PN_E_INTERNAL) {
         pn_error_t reset_err{};
         reset_err.struct_size = sizeof reset_err;
@@ -262,8 +296,8 @@ void Scheduler::report_failure(Stage& s, pn_status_t status, const pn_error_t& e
             msg += " (the instance was reset)";
         }
     }
-    warn(msg);
-    if (failure_.status == PN_OK) failure_ = StageFailure{status, s.instance_name, msg};
+    diagnostics_.note(PNP_LOG_ERROR, s.instance_name.c_str(), msg.c_str());
+    if (failure_.status == PN_OK) failure_ = StageFailure{status, s.instance_name, s.instance_name + " " + msg};
 }
 
 void Scheduler::drain() {

@@ -20,6 +20,7 @@
 //     the app batches its pushes: the output is bit-identical for the same input.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -28,6 +29,7 @@
 #include <pednav/pn_plugin.h>
 
 #include "config.hpp"
+#include "diagnostics.hpp"
 #include "output_queue.hpp"
 #include "record_queue.hpp"
 
@@ -35,11 +37,21 @@ namespace pednav::engine {
 
 class Scheduler;
 
-// One plugin instance in the pipeline.
+// One plugin instance in the pipeline. It owns the instance: destroying the
+// Stage destroys it, so no path (a constructor that throws halfway included)
+// can leak one.
 struct Stage {
+    Stage() = default;
+    Stage(const Stage&) = delete;
+    Stage& operator=(const Stage&) = delete;
+    ~Stage() {
+        if (self) ops->destroy(self);
+    }
+
     Role role;
     std::string instance_name;  // "foot/step_detector"
     std::string plugin_id;
+    std::string pointer;        // its place in the config: "/pipelines/foot/step_detector"
     const pnp_descriptor_t* descriptor = nullptr;
     const pnp_node_ops_t* ops = nullptr;
     void* self = nullptr;
@@ -56,19 +68,24 @@ struct Stage {
 
     // State of the current segment.
     bool flushed = false;
-    int64_t last_stored_t_ns = INT64_MIN;
+    int64_t last_stored_t_ns = INT64_MIN;  // newest record put into its queue
+    int64_t last_emitted_t_ns[PN_REC_TYPE_COUNT];  // newest accepted record per type
     int64_t last_input_t_ns = INT64_MIN;  // newest forward record consumed
-    std::string sink_problem;  // why the sink last refused a record
+    // Why the sink last refused a record. Fixed storage: the sink runs inside
+    // noexcept plugin calls and must not allocate to describe a refusal.
+    char sink_problem[256] = {};
 
     // Counters.
     uint64_t records_in = 0, records_out = 0, failures = 0, resets = 0;
 
-    // What the plugin gets; host_data and sink_data point back here.
-    pnp_host_t host{};
+    // What the plugin gets: host.host_data points at the context, sink_data
+    // back here.
+    HostContext host_context;
     pnp_sink_t sink{};
     Scheduler* scheduler = nullptr;
-    void* owner = nullptr;  // the Engine, for host->log
     int index = 0;
+
+    void clear_segment();  // back to the state of a new segment
 };
 
 struct StageFailure {
@@ -82,8 +99,11 @@ public:
     // Takes the created stages in role order (at most one per role) and the
     // output queue's capacity (0 = the default). set_output_mask selects the
     // types copied to the output queue, from the last stage producing each type.
-    Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity);
-    ~Scheduler();  // destroys the instances
+    // Throws ConfigProblem when a stage declares a look-ahead outside
+    // [0, kMaxLatencyNs]; the stages (and so the instances) are destroyed then.
+    Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity, Diagnostics& diagnostics);
+
+    static constexpr int64_t kMaxLatencyNs = 60'000'000'000;  // 60 s per stage
 
     // Appends one validated app record and processes whatever became ready.
     void push(const pn_record_header_t* record);
@@ -96,16 +116,14 @@ public:
     StageFailure take_failure();
     bool has_failure() const { return failure_.status != PN_OK; }
 
-    void set_output_mask(uint64_t mask) { output_mask_ = mask; }
-    uint64_t output_mask() const { return output_mask_; }
+    // Atomic: the mask may be set from any thread while records flow.
+    void set_output_mask(uint64_t mask) { output_mask_.store(mask, std::memory_order_relaxed); }
+    uint64_t output_mask() const { return output_mask_.load(std::memory_order_relaxed); }
     OutputQueue& outputs() { return outputs_; }
     const OutputQueue& outputs() const { return outputs_; }
     int64_t latency_ns() const;
     const std::vector<std::unique_ptr<Stage>>& stages() const { return stages_; }
     uint64_t records_in() const { return records_in_; }
-    const std::vector<std::string>& warnings() const { return warnings_; }
-    uint64_t warning_count() const { return warning_count_; }
-    void warn(const std::string& message);
 
     // Called by the sink trampoline.
     pn_status_t accept(Stage& stage, const pn_record_header_t* record);
@@ -121,21 +139,22 @@ private:
     void deliver_forward(Stage& s, int64_t t_ns);
     void call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count);
     void report_failure(Stage& s, pn_status_t status, const pn_error_t& err, const char* during);
+    pn_status_t refuse(Stage& s, pn_status_t status);  // logs s.sink_problem as misbehaviour
     void release_consumed();
+    int64_t checked_latency(const Stage& s) const;
 
     std::vector<std::unique_ptr<Stage>> stages_;
     std::vector<RecordQueue> queues_;      // 0 = app, k+1 = stage k
     std::vector<uint64_t> queue_wanted_;   // union of reader masks per queue
     uint64_t final_producer_mask_[kRoleCount] = {};  // per stage: types it is the last producer of
     OutputQueue outputs_;
-    uint64_t output_mask_;
+    std::atomic<uint64_t> output_mask_;
     int64_t app_limit_ns_ = INT64_MIN;     // app records up to here are released
     int64_t last_app_t_ns_ = INT64_MIN;
     uint64_t records_in_ = 0;
     uint64_t drains_ = 0;
     StageFailure failure_;
-    std::vector<std::string> warnings_;
-    uint64_t warning_count_ = 0;
+    Diagnostics& diagnostics_;
 };
 
 }  // namespace pednav::engine

@@ -130,7 +130,7 @@ TEST_CASE("every first-party plugin passes the conformance suite in each mount i
                 candidates.push_back({p["id"].get<std::string>(), p["kind"].get<std::string>(), tag.substr(6)});
         }
         if (candidates.size() == before)  // no mount declared: any mount
-            for (const char* m : {"foot", "chest", "waist"})
+            for (const char* m : {"foot", "chest", "handheld", "waist"})
                 candidates.push_back({p["id"].get<std::string>(), p["kind"].get<std::string>(), m});
     }
     REQUIRE(candidates.size() >= 4);
@@ -138,8 +138,14 @@ TEST_CASE("every first-party plugin passes the conformance suite in each mount i
     std::map<std::string, pednav::sim::SimOutput> walks;  // one simulated walk per mount, shared by its candidates
     size_t tested = 0;
     for (const auto& c : candidates) {
-        const std::string preset_text = read_file(std::string(PEDNAV_CONFIG_DIR) + "/" + c.mount + ".json");
-        if (preset_text.empty()) continue;  // no preset for this mount yet
+        // A plugin made for a mount runs in that mount's preset; a mount without
+        // one is a failure, not a pass without running.
+        const std::string preset_path = std::string(PEDNAV_CONFIG_DIR) + "/" + c.mount + ".json";
+        const std::string preset_text = read_file(preset_path);
+        if (preset_text.empty()) {
+            FAIL_CHECK(c.id << " declares mount:" << c.mount << " but there is no preset " << preset_path);
+            continue;
+        }
         CAPTURE(c.id);
         CAPTURE(c.mount);
         json preset = json::parse(preset_text);

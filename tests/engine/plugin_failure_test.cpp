@@ -59,3 +59,32 @@ TEST_CASE("a plugin emitting NaN is refused with PN_E_NUMERIC; the finite output
     CHECK(push(e, walk(next, 10)) == PN_OK);
     CHECK(!of_type(e.poll_all(), PN_REC_POSITION).empty());
 }
+
+TEST_CASE("an output going back in time is refused although only the app reads it") {
+    SUBCASE("a position 1 s before the previous one, in process") {
+        Engine e(make_config({{"position_filter", "org.pednav.test.emits_nan",
+                               {{"nan_at", 1000000}, {"rewind_at", 150}, {"rewind_s", 1.0}}}}),
+                 {fixture_dir("emits_nan")});
+        REQUIRE_MESSAGE(e.status() == PN_OK, e.error().message);
+        pn_error_t err = make_error();
+        CHECK(push(e, walk(0, 200), &err) == PN_E_OUT_OF_ORDER);
+        CHECK(std::string(err.where) == "foot/position_filter");
+        CHECK_MESSAGE(contains(err.message, "before its previous position"), err.message);
+        const auto pos = of_type(e.poll_all(), PN_REC_POSITION);
+        REQUIRE(pos.size() == 150);  // samples 1..150; the rewound one never reaches the app
+        for (size_t i = 1; i < pos.size(); ++i) CHECK(pos[i].header.t_ns > pos[i - 1].header.t_ns);
+    }
+    SUBCASE("t = 0 from flush after the walk") {
+        Engine e(make_config({{"position_filter", "org.pednav.test.emits_nan", {{"nan_at", 1000000}, {"flush_at_zero", true}}}}),
+                 {fixture_dir("emits_nan")});
+        REQUIRE_MESSAGE(e.status() == PN_OK, e.error().message);
+        REQUIRE(push(e, walk(0, 100)) == PN_OK);
+        pn_error_t err = make_error();
+        CHECK(pn_engine_flush(e.get(), &err) == PN_E_OUT_OF_ORDER);
+        CHECK_MESSAGE(contains(err.message, "at t=0.000000 s, before its previous position"), err.message);
+        const auto pos = of_type(e.poll_all(), PN_REC_POSITION);
+        REQUIRE(pos.size() == 100);
+        CHECK(pos.back().position.pos_enu_m[0] == 100.0);  // the last position is the walk's, not 0,0,0
+        CHECK(e.describe()["counters"]["plugin_failures"] == 1);
+    }
+}

@@ -73,7 +73,7 @@ Node create(const std::string& library, const std::string& id, const nlohmann::j
         info.instance_name = id.c_str();
         info.mount = "foot";
         info.imu_rate_hz = rate;
-        static const pnp_host_t host{PN_ABI_VERSION, sizeof(pnp_host_t), nullptr, nullptr};
+        static const pnp_host_t host{PN_ABI_VERSION, sizeof(pnp_host_t), nullptr, nullptr, nullptr, nullptr};
         pn_error_t err{};
         err.struct_size = sizeof err;
         Node n;

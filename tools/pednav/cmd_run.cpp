@@ -19,11 +19,15 @@ constexpr const char* kUsage =
     "usage: pednav run --mount foot|chest|waist --input FILE [--config FILE] [--format NAME]\n"
     "                  [--output track.csv] [--steps FILE] [--start x,y,z] [--heading DEG]\n"
     "                  [--geojson FILE] [--gpx FILE] [--summary FILE] [--plot FILE.svg]\n"
-    "                  [--column-map FILE.json] [--origin lat,lon,height] [--plugin-dir DIR]\n"
+    "                  [--column-map FILE.json] [--origin lat,lon,height] [--map FILE.geojson]\n"
+    "                  [--plugin-dir DIR]\n"
     "  --config  a pednav-config/1 file instead of the mount's preset (configs/<mount>.json)\n"
     "  --format  the input format (default auto: detected); --column-map for any other CSV\n"
     "  --start, --heading  the start point (m) and heading (deg clockwise from north), when known\n"
-    "  --origin  WGS-84 of the start point, for --geojson and --gpx\n";
+    "  --origin  the geodetic origin (WGS-84 of ENU 0,0,0, the start point by default): given to the\n"
+    "            engine and used by --geojson and --gpx\n"
+    "  --map     a map (GeoJSON, docs/maps.md) for the pipeline's map matcher\n"
+    "exit status: 0 done, 1 an error (or plugin failures: outputs still written), 2 a usage mistake\n";
 
 }  // namespace
 
@@ -32,7 +36,8 @@ const char* const pednav_cmd_run_usage = kUsage;
 int pednav_cmd_run(const std::vector<std::string>& argv) {
     using namespace pednav;
     cli::Args args(argv, kUsage);
-    std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, summary, plot, column_map_path;
+    std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, summary, plot, column_map_path,
+        map_path;
     io::Origin origin;
     ReplayOptions options;
     options.plugin_dirs = {cli::default_plugin_dir()};
@@ -49,6 +54,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         else if (a == "--summary") summary = args.value(a);
         else if (a == "--plot") plot = args.value(a);
         else if (a == "--column-map") column_map_path = args.value(a);
+        else if (a == "--map") map_path = args.value(a);
         else if (a == "--origin") {
             const auto v = cli::parse_numbers(args.value(a), 3, a);
             if (std::fabs(v[0]) > 90 || std::fabs(v[1]) > 180)
@@ -69,12 +75,21 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         }
     }
     if (input.empty()) throw cli::UsageError("run needs --input FILE");
-    if (mount.empty() && config_path.empty()) throw cli::UsageError("run needs --mount foot|chest|waist or --config FILE");
-    if (!mount.empty() && mount != "foot" && mount != "chest" && mount != "waist")
-        throw cli::UsageError("--mount must be foot, chest or waist, not " + mount);
+    if (mount.empty() && config_path.empty())
+        throw cli::UsageError("run needs --mount foot|chest|handheld|waist or --config FILE");
+    if (!mount.empty() && mount != "foot" && mount != "chest" && mount != "handheld" && mount != "waist")
+        throw cli::UsageError("--mount must be foot, chest, handheld or waist, not " + mount);
 
     options.config_json = cli::load_config(config_path, mount.empty() ? "foot" : mount);
     options.mount = mount;
+    if (origin.known || !map_path.empty()) {  // the options win over the config's own
+        nlohmann::json doc = nlohmann::json::parse(options.config_json, nullptr, false);
+        if (doc.is_discarded() || !doc.is_object()) throw std::runtime_error("config: not a JSON object");
+        if (origin.known)
+            doc["origin"] = {{"lat_deg", origin.lat_deg}, {"lon_deg", origin.lon_deg}, {"height_m", origin.height_m}};
+        if (!map_path.empty()) doc["map"] = {{"path", map_path}};
+        options.config_json = doc.dump();
+    }
 
     // The config is checked (and its plugins created) before the input is read.
     if (const std::string problem = config_problem(options); !problem.empty())
@@ -124,6 +139,11 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         if (!out) throw std::runtime_error("cannot write " + summary);
     }
     if (!plot.empty()) cli::write_run_plot(plot, input, r);
+    if (r.plugin_failures > 0) {
+        // The outputs are written, but the run did not do its job cleanly.
+        std::fprintf(stderr, "pednav run: %llu plugin failure%s (see the warnings above); outputs written\n",
+                     static_cast<unsigned long long>(r.plugin_failures), r.plugin_failures == 1 ? "" : "s");
+    }
     const pn_position_t* last = r.positions.empty() ? nullptr : &r.positions.back();
     std::printf("samples %zu, positions %zu, steps %zu, distance %.2f m, latency %.3f s\n", log.imu.size(),
                 r.positions.size(), r.strides.size() ? r.strides.size() : r.steps.size(),
@@ -131,5 +151,5 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     if (last)
         std::printf("final position x %.3f m, y %.3f m, z %.3f m, heading %.1f deg\n", last->pos_enu_m[0],
                     last->pos_enu_m[1], last->pos_enu_m[2], last->heading_rad * 180.0 / M_PI);
-    return 0;
+    return r.plugin_failures > 0 ? 1 : 0;
 }

@@ -5,13 +5,16 @@
 #include <string>
 #include <vector>
 
+#include <pednav/pn_engine.h>
+
 #include "cli_common.hpp"
 #include "subcommands.hpp"
 
 namespace {
 
 void print_usage(FILE* out) {
-    std::fputs("usage: pednav <command> [options]   (pednav <command> --help: that command's options)\n", out);
+    std::fputs("usage: pednav <command> [options]   (pednav <command> --help: that command's options;\n"
+               "       pednav --version: the engine and C ABI versions)\n", out);
     for (const auto& c : pednav_subcommands()) std::fprintf(out, "  %-8s %s\n", c.name, c.summary);
 }
 
@@ -21,6 +24,11 @@ int main(int argc, char** argv) {
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
         print_usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
+    }
+    if (!std::strcmp(argv[1], "--version") || !std::strcmp(argv[1], "version")) {
+        const uint32_t abi = pn_abi_version();
+        std::printf("pednav %s (C ABI %u.%u)\n", pn_version_string(), PN_ABI_VERSION_MAJOR(abi), PN_ABI_VERSION_MINOR(abi));
+        return 0;
     }
     const std::string command = argv[1];
     const std::vector<std::string> args(argv + 2, argv + argc);

@@ -4,8 +4,10 @@
  * A plugin library exports exactly one symbol, the entry function
  *     const pnp_library_t *pnp_entry_v1(void);
  * whose name carries the ABI major. It returns a pointer to static constant
- * data and does nothing else (no allocation, no threads, no I/O), so the engine
- * can inspect a library before running any of its code.
+ * data and does nothing else (no allocation, no threads, no I/O). Opening a
+ * library runs its static initializers, so the engine decides which libraries
+ * to open from the manifests written beside them at build time, and opens only
+ * those whose plugins the configured pipeline uses (docs/loading.md).
  *
  * Growable structs begin with {abi_version, struct_size} or {struct_size}. A
  * reader uses the prefix it knows; slots appended by later minors are tested
@@ -67,14 +69,28 @@ enum { PNP_LOG_DEBUG = 0, PNP_LOG_INFO = 1, PNP_LOG_WARN = 2, PNP_LOG_ERROR = 3 
 
 /* ------------------------------------------------------------------ host */
 
-/* What the engine gives each instance. One per instance, valid until destroy. */
+/* What the engine gives each instance (valid until its destroy) and each
+ * library's init (valid until the library is unloaded). Slots after `log` were
+ * added in 1.1: test them with PNP_HAS_SLOT, an engine of 1.0 lacks them. */
 typedef struct pnp_host_t {
     uint32_t abi_version; /* PN_ABI_VERSION of the engine */
     uint32_t struct_size;
     void *host_data; /* engine's own; do not touch */
-    /* [thread-safe] Write one log line attributed to this instance. msg is
-     * borrowed for the call. */
+    /* [thread-safe] Write one log line attributed to this instance (or, from
+     * init, to the library). msg is borrowed for the call. Lines at
+     * PNP_LOG_WARN and above are also kept in the engine's description. */
     void (*log)(const struct pnp_host_t *host, pnp_log_level_t level, const char *msg)PNP_NOEXCEPT;
+    /* [instance] 1.1. The engine's geodetic origin, the WGS-84 point at ENU
+     * (0, 0, 0): PN_OK with *origin filled, or PN_NO_DATA while the engine has
+     * none. An engine without one may get it later (from the first good GNSS
+     * fix), never changes it once it has one, and forgets a fix-derived origin
+     * on reset. Call it from within a call the engine made into the instance. */
+    pn_status_t (*get_origin)(const struct pnp_host_t *host, pn_geo_point_t *origin)PNP_NOEXCEPT;
+    /* [instance] 1.1. Offers an origin, e.g. the one a map matcher's map
+     * declares: PN_OK when the engine had none and takes it, PN_E_BAD_STATE
+     * when it already has one (read it with get_origin and use that),
+     * PN_E_INVALID_ARGUMENT when the point is not finite or out of range. */
+    pn_status_t (*offer_origin)(const struct pnp_host_t *host, const pn_geo_point_t *origin)PNP_NOEXCEPT;
 } pnp_host_t;
 
 /* Where a plugin puts its outputs during process/flush. */
@@ -116,7 +132,12 @@ typedef struct pnp_node_ops_t {
                            const pnp_sink_t *sink, pn_error_t *err)PNP_NOEXCEPT;
     /* [instance] End of stream: emit what is still pending. Optional. */
     pn_status_t (*flush)(void *self, const pnp_sink_t *sink, pn_error_t *err)PNP_NOEXCEPT;
-    /* [instance] Apply new params without losing state. Optional. */
+    /* [instance] Apply new params (the whole "params" object, compact UTF-8
+     * JSON, NUL-terminated; borrowed for the call) without losing state; they
+     * apply from the next record processed and survive reset. Called by
+     * pn_engine_reconfigure after the engine has checked them against the
+     * params schema. Return PN_E_UNSUPPORTED when the new values need a new
+     * instance (the old ones stay in force). Optional (NULL = unsupported). */
     pn_status_t (*reconfigure)(void *self, const char *params_json, uint32_t params_len,
                                pn_error_t *err)PNP_NOEXCEPT;
     /* [instance] Fixed look-ahead in ns: every output about time t is emitted by
@@ -125,8 +146,10 @@ typedef struct pnp_node_ops_t {
      * inputs and decisions aligned. Optional (NULL = 0). Must not change
      * between reset and destroy. */
     int64_t (*latency_ns)(const void *self)PNP_NOEXCEPT;
-    /* [thread-safe] Optional extension by id ("vendor.name/rev"), NULL if none. */
-    const void *(*get_extension)(const void *self, const char *id)PNP_NOEXCEPT;
+    /* Reserved. 1.0 declared an extension query here that no engine ever
+     * called; it was withdrawn in 1.1 before anything relied on it. Leave NULL:
+     * engines of 1.x never read this slot. */
+    const void *reserved_slot;
 } pnp_node_ops_t;
 /* destroy, reset and process are required; the slots after them are optional
  * tail slots (test with PNP_HAS_SLOT), so this minimum never grows. */
@@ -139,7 +162,12 @@ typedef struct pnp_step_detector_ops_t {
 
 typedef struct pnp_attitude_estimator_ops_t {
     pnp_node_ops_t node;
-    /* [instance] Force the attitude (e.g. from a user-given heading). */
+    /* [instance] Start from this attitude instead of the estimator's own
+     * alignment: called before the first record (and again after each reset)
+     * when the app gave one with pn_engine_set_attitude. t_ns is the time it
+     * holds at, INT64_MIN for "the first sample". q is a unit quaternion,
+     * Hamilton, w first. Return PN_E_UNSUPPORTED if the estimator cannot
+     * take one. */
     pn_status_t (*set_attitude)(void *self, int64_t t_ns, const double q_enu_from_body[4],
                                 pn_error_t *err)PNP_NOEXCEPT;
 } pnp_attitude_estimator_ops_t;
@@ -154,8 +182,14 @@ typedef struct pnp_position_filter_ops_t {
 
 typedef struct pnp_map_matcher_ops_t {
     pnp_node_ops_t node;
-    /* [instance] Load a map: format id ("pednav.map/1" = GeoJSON walls/zones),
-     * bytes borrowed for the call. */
+    /* [instance] Load a map, replacing any map loaded before: format id
+     * ("pednav.map/1" = GeoJSON, docs/maps.md), bytes borrowed for the call
+     * (not NUL-terminated). Called when the app gives a map (the config's
+     * "map" at create, pn_engine_load_map between records) and again after
+     * each reset with the last map given. On failure fill err.where with a JSON pointer into the
+     * map document naming the feature at fault ("/features/12/geometry") and
+     * keep the previous map. A map in WGS-84 needs the geodetic origin: read it
+     * with host->get_origin, or offer the map's own with host->offer_origin. */
     pn_status_t (*load_map)(void *self, const char *format, const void *bytes, size_t size,
                             pn_error_t *err)PNP_NOEXCEPT;
     /* [instance] Same meaning as for position filters. */
@@ -173,7 +207,13 @@ typedef struct pnp_descriptor_t {
     const char *version;     /* semver of the plugin */
     const char *vendor;
     const char *description;
-    const char *const *features; /* NULL-terminated tags: "mount:foot", "needs:mag" */
+    /* NULL-terminated tags. "mount:<m>": a mount the plugin is made for
+     * (foot, chest, handheld, waist). "needs:<type>" (record type names as in
+     * pn_engine_describe: gait_phase, attitude, step, position, stride, ...):
+     * a type the plugin cannot work without; an engine whose earlier stages
+     * produce no such record is refused at create (app input types are not
+     * checked: the app may push them). "uses:<type>": used when present. */
+    const char *const *features;
     const char *params_schema_json; /* JSON Schema of params, may be NULL */
     pnp_kind_t kind;
     uint32_t kind_version;   /* semantics of the kind contract, 1 */

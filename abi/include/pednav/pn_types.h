@@ -6,7 +6,8 @@
  * (new record types, new fields at the tail of a record, new status codes).
  *
  * Conventions (one set for the whole engine, see docs/conventions.md):
- *   - navigation frame: East-North-Up (ENU), origin at the start point;
+ *   - navigation frame: East-North-Up (ENU) metres; its origin is the engine's
+ *     geodetic origin (pn_geo_point_t) once it has one, else the start point;
  *   - body frame: Forward-Left-Up (FLU), the IMU's own axes after the reader's
  *     axis remap; nothing assumes the sensor sits level;
  *   - SI units, written in every field name: s, m, m/s, m/s^2, rad, rad/s,
@@ -27,7 +28,7 @@ extern "C" {
 #endif
 
 #define PN_ABI_MAJOR 1
-#define PN_ABI_MINOR 0
+#define PN_ABI_MINOR 1
 /* abi_version field value: major in the high 16 bits, minor in the low 16. */
 #define PN_ABI_VERSION ((uint32_t)((PN_ABI_MAJOR << 16) | PN_ABI_MINOR))
 #define PN_ABI_VERSION_MAJOR(v) ((uint32_t)(v) >> 16)
@@ -70,6 +71,16 @@ typedef struct pn_error_t {
     char where[PN_ERROR_WHERE_SIZE];     /* JSON pointer to the config key, a file, or an instance name */
     char message[PN_ERROR_MESSAGE_SIZE]; /* one human-readable sentence, NUL-terminated */
 } pn_error_t;
+
+/* ------------------------------------------------------------ geodesy */
+
+/* A point on the WGS-84 ellipsoid (1.1). The engine's geodetic origin is one:
+ * the point at ENU (0, 0, 0), whose tangent plane is the ENU frame. */
+typedef struct pn_geo_point_t {
+    double lat_deg;  /* geodetic latitude, north positive, [-90, 90] */
+    double lon_deg;  /* longitude, east positive, [-180, 180] */
+    double height_m; /* height above the ellipsoid */
+} pn_geo_point_t;
 
 /* --------------------------------------------------------------- records */
 

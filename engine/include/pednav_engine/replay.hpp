@@ -34,6 +34,7 @@ struct ReplayResult {
     std::vector<pn_gait_phase_t> gait_phases;  // when keep_gait_phases
     std::vector<std::string> warnings;     // input rows rejected, plugin misbehaviour, ...
     std::string error;                     // non-empty when the run stopped early; outputs so far are kept
+    uint64_t plugin_failures = 0;          // plugin calls that failed (each also in warnings)
     int64_t latency_ns = 0;                // pipeline output latency
     std::string describe_json;             // pn_engine_describe() at the end
 };

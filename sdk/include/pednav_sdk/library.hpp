@@ -24,17 +24,20 @@
 
 namespace pednav::sdk::detail {
 
-inline void fill_error(pn_error_t* err, pn_status_t code, const std::string& where,
-                       const std::string& message) noexcept {
+// Fills err with `prefix` + `message`, writing only what fits in the caller's
+// struct (an older, smaller pn_error_t). Allocates nothing: it also reports
+// running out of memory.
+inline void fill_error(pn_error_t* err, pn_status_t code, const char* where, const char* message,
+                       const char* prefix = "") noexcept {
     if (!err) return;
-    // Write only what fits in the caller's struct (an older, smaller pn_error_t).
     const size_t size = err->struct_size < sizeof(pn_error_t) ? err->struct_size : sizeof(pn_error_t);
     if (size >= offsetof(pn_error_t, code) + sizeof err->code) err->code = code;
     if (size > offsetof(pn_error_t, where))
-        std::snprintf(err->where, std::min(sizeof err->where, size - offsetof(pn_error_t, where)), "%s", where.c_str());
+        std::snprintf(err->where, std::min(sizeof err->where, size - offsetof(pn_error_t, where)), "%s",
+                      where ? where : "");
     if (size > offsetof(pn_error_t, message))
-        std::snprintf(err->message, std::min(sizeof err->message, size - offsetof(pn_error_t, message)), "%s",
-                      message.c_str());
+        std::snprintf(err->message, std::min(sizeof err->message, size - offsetof(pn_error_t, message)), "%s%s",
+                      prefix, message ? message : "");
 }
 
 // Maps the exception in flight to a status and fills err.
@@ -42,13 +45,13 @@ inline pn_status_t status_from_exception(pn_error_t* err, const char* where) noe
     try {
         throw;
     } catch (const ConfigError& e) {
-        fill_error(err, PN_E_INVALID_CONFIG, e.where(), e.what());
+        fill_error(err, PN_E_INVALID_CONFIG, e.where().c_str(), e.what());
         return PN_E_INVALID_CONFIG;
     } catch (const NumericError& e) {
         fill_error(err, PN_E_NUMERIC, where, e.what());
         return PN_E_NUMERIC;
     } catch (const InputError& e) {
-        fill_error(err, PN_E_BAD_INPUT, where, e.what());
+        fill_error(err, PN_E_BAD_INPUT, e.where().empty() ? where : e.where().c_str(), e.what());
         return PN_E_BAD_INPUT;
     } catch (const EmitError& e) {
         fill_error(err, e.status, where, e.what());
@@ -57,7 +60,7 @@ inline pn_status_t status_from_exception(pn_error_t* err, const char* where) noe
         fill_error(err, PN_E_OUT_OF_MEMORY, where, "out of memory");
         return PN_E_OUT_OF_MEMORY;
     } catch (const std::exception& e) {
-        fill_error(err, PN_E_INTERNAL, where, std::string("plugin threw: ") + e.what());
+        fill_error(err, PN_E_INTERNAL, where, e.what(), "plugin threw: ");
         return PN_E_INTERNAL;
     } catch (...) {
         fill_error(err, PN_E_INTERNAL, where, "plugin threw a non-standard exception");
@@ -236,10 +239,9 @@ struct Trampolines {
     static int64_t latency_ns(const void* self) noexcept {
         return static_cast<const Instance<T>*>(self)->node->latency_ns();
     }
-    static const void* get_extension(const void*, const char*) noexcept { return nullptr; }
 
     static pn_status_t unsupported(pn_error_t* err, const char* what) {
-        fill_error(err, PN_E_UNSUPPORTED, T::kId, std::string(what) + " is not supported by this plugin");
+        fill_error(err, PN_E_UNSUPPORTED, T::kId, " is not supported by this plugin", what);
         return PN_E_UNSUPPORTED;
     }
     static pn_status_t set_start(void* self, const double pos[3], double heading, pn_error_t* err) noexcept {
@@ -268,8 +270,8 @@ struct Trampolines {
     }
 
     static constexpr pnp_node_ops_t node_ops() {
-        return pnp_node_ops_t{0,       0,           &destroy,    &reset,         &process,
-                              &flush,  &reconfigure, &latency_ns, &get_extension};
+        return pnp_node_ops_t{0,      0,            &destroy,    &reset, &process,
+                              &flush, &reconfigure, &latency_ns, nullptr};
     }
 };
 

@@ -40,10 +40,17 @@ public:
 };
 
 // Thrown by a hook when its input breaks the contract (wrong units, missing
-// stream). Turned into PN_E_BAD_INPUT.
+// stream, a map feature that is wrong). Turned into PN_E_BAD_INPUT; where(),
+// when given, is a JSON pointer into the input document (for a map: the
+// feature at fault, "/features/12/geometry").
 class InputError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit InputError(const std::string& what) : std::runtime_error(what) {}
+    InputError(std::string where, const std::string& what) : std::runtime_error(what), where_(std::move(where)) {}
+    const std::string& where() const { return where_; }
+
+private:
+    std::string where_;
 };
 
 // Thrown by emit() when the engine refuses a record.
@@ -160,6 +167,16 @@ protected:
     }
     void log(pnp_log_level_t level, const std::string& msg) const {
         if (host_ && host_->log) host_->log(host_, level, msg.c_str());
+    }
+    // The engine's geodetic origin (the WGS-84 point at ENU 0, 0, 0), if it
+    // has one; an engine older than ABI 1.1 never has.
+    bool origin(pn_geo_point_t& out) const {
+        return PNP_HAS_SLOT(host_, pnp_host_t, get_origin) && host_->get_origin(host_, &out) == PN_OK;
+    }
+    // Offers an origin (e.g. the one a map declares); true when the engine
+    // had none and took it. Either way origin() then gives the one in force.
+    bool offer_origin(const pn_geo_point_t& p) const {
+        return PNP_HAS_SLOT(host_, pnp_host_t, offer_origin) && host_->offer_origin(host_, &p) == PN_OK;
     }
 
 private:
