@@ -3,7 +3,7 @@
 #   tools/install_deps.sh [--java] [extra packages...]
 # --java adds the JDK and JUnit 5 for the optional Java binding (bindings/java).
 set -euo pipefail
-packages=(build-essential cmake pkg-config libeigen3-dev nlohmann-json3-dev doctest-dev valgrind)
+packages=(build-essential cmake pkg-config libeigen3-dev nlohmann-json3-dev doctest-dev valgrind python3-jsonschema)
 extra=()
 for a in "$@"; do
   if [ "$a" = "--java" ]; then packages+=(default-jdk junit5); else extra+=("$a"); fi

@@ -2,6 +2,8 @@
 // offending key (a JSON pointer into the config).
 #include <doctest/doctest.h>
 
+#include <fstream>
+
 #include "test_support.hpp"
 
 using namespace pednav::test;
@@ -134,4 +136,24 @@ TEST_CASE("create rejects bad arguments without crashing") {
     CHECK(pn_engine_create(&info, &engine, nullptr) == PN_E_ABI_MISMATCH);
     CHECK(engine == nullptr);
     pn_engine_destroy(nullptr);
+}
+
+TEST_CASE("the engine judges the shared config cases as the config format's JSON Schema does") {
+    std::ifstream in(PEDNAV_CONFIG_CASES);
+    REQUIRE_MESSAGE(in.good(), "missing " << PEDNAV_CONFIG_CASES);
+    const nlohmann::json cases = nlohmann::json::parse(in);
+    const nlohmann::json& base = cases.at("base");
+    for (const auto& patch : cases.at("valid")) {
+        nlohmann::json doc = base;
+        doc.merge_patch(patch);
+        Engine e(doc.dump(), {fixture_dir("good")});
+        CHECK_MESSAGE(e.status() == PN_OK, doc.dump() << ": " << e.error().where << ": " << e.error().message);
+    }
+    for (const auto& c : cases.at("invalid")) {
+        nlohmann::json doc = base;
+        doc.merge_patch(c.at("patch"));
+        const auto r = create_fails(doc.dump());
+        CHECK_MESSAGE(r.status == PN_E_INVALID_CONFIG, doc.dump());
+        CHECK_MESSAGE(r.where == c.at("where").get<std::string>(), doc.dump());
+    }
 }
