@@ -43,7 +43,7 @@ constexpr const char* kUsage =
     "  --only      run only the walks whose name contains TEXT\n"
     "  --patch     a JSON merge patch applied to each mount's preset (configs/<mount>.json)\n"
     "  --detector  the foot pipeline's stance detector: shoe (the preset's) or multicondition\n"
-    "  --suite     the accuracy suite (the default) writes DIR/accuracy.md, DIR/accuracy.json and\n"
+    "  --suite     accuracy (the default) writes DIR/accuracy.md, DIR/accuracy.json and\n"
     "              DIR/plots/<mount>-<walk>.svg; the foot suites print the foot pipeline's own tables:\n"
     "              full (simulated walks at 400 Hz, then every foot recording), quick (xio and koroglu),\n"
     "              sim (simulated walks at 100, 200, 400 Hz), sweep (gaits, mountings, rates), tables\n"
