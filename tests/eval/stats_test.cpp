@@ -60,3 +60,21 @@ TEST_CASE("Procrustes rotation recovers a known rotation, in least squares") {
     CHECK(procrustes_rotation_rad({{1, 0}, {0, 1}}, {{std::cos(0.2), std::sin(0.2)}, {0, 1}}) ==
           doctest::Approx(0.1));
 }
+
+TEST_CASE("percentile, higher method: the upper order statistic at rank (n - 1) q / 100") {
+    CHECK(percentile({4, 1, 3, 2}, 50.0, PercentileMethod::higher) == 3.0);  // rank 1.5 -> the 2nd of 0..3
+    CHECK(percentile({4, 1, 3, 2}, 75.0, PercentileMethod::higher) == 4.0);  // rank 2.25
+    CHECK(percentile({5, 1, 3}, 50.0, PercentileMethod::higher) == 3.0);     // rank 1: exact
+    CHECK(percentile({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, 90.0, PercentileMethod::higher) == 10.0);  // rank 8.1
+    CHECK(percentile({7, 2}, 0.0, PercentileMethod::higher) == 2.0);
+    CHECK(percentile({7, 2}, 100.0, PercentileMethod::higher) == 7.0);
+    CHECK(std::isnan(percentile({}, 50.0, PercentileMethod::higher)));
+}
+
+TEST_CASE("standard deviation with ddof 1 is the sample one") {
+    // {2, 4, 4, 4, 5, 5, 7, 9}: squared deviations sum to 32.
+    CHECK(standard_deviation({2, 4, 4, 4, 5, 5, 7, 9}, 1) == doctest::Approx(std::sqrt(32.0 / 7.0)));
+    CHECK(axis_stats({-1.0, 2.0, 0.5}, 1).sd == doctest::Approx(std::sqrt(4.5 / 2.0)));
+    CHECK(std::isnan(standard_deviation({3.0}, 1)));
+    CHECK(standard_deviation({3.0}) == 0.0);
+}

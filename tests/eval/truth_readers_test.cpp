@@ -78,6 +78,13 @@ TEST_CASE("ipol step annotations: footsteps within the trial and the two 10 m le
     CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/5-2.json").step_count == 34);
     CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/1-1.json", 100.0, 10.0, "left").step_count == 17);
     CHECK(read_ipol_steps(kData + "/ipol-gait-waist-feet/1-1.json", 100.0, 10.0, "right").step_count == 18);
+    // The whole recording's footsteps: 5-2's six after the trial counted too, the legs the same.
+    const std::string five_two = kData + "/ipol-gait-waist-feet/5-2.json";
+    CHECK(read_ipol_steps(five_two, 100.0, 10.0, "left", true).step_count == 21);
+    CHECK(read_ipol_steps(five_two, 100.0, 10.0, "right", true).step_count == 19);
+    CHECK(read_ipol_steps(five_two, 100.0, 10.0, "both", true).step_count == 40);
+    CHECK(read_ipol_steps(five_two, 100.0, 10.0, "left", true).legs[1].t1_s ==
+          read_ipol_steps(five_two).legs[1].t1_s);
 }
 
 TEST_CASE("IPIN POSI lines: metres from the first point, floors") {

@@ -5,18 +5,46 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 #include <Eigen/Eigenvalues>
+#include <pednav_eval/config_patch.hpp>
+#include <pednav_eval/walks.hpp>
 #include <pednav_foot/so3.hpp>
+#include <pednav_foot_eval/patches.hpp>
+#include <pednav_foot_eval/runs.hpp>
+#include <pednav_foot_eval/scores.hpp>
 #include <pednav_io/sensor_log.hpp>
 #include <pednav_sim/simulate.hpp>
 
-#include "foot_eval.hpp"
-
 using namespace pednav;
 using namespace pednav::foot_eval;
+using eval::SimulatedWalk;
 
 namespace {
+const std::string kData = PEDNAV_SHARED_DATA_DIR;
+const std::vector<std::string> kPlugins = {PEDNAV_PLUGIN_OUTPUT_DIR};
+
+// configs/foot.json with `patch` merged in.
+std::string foot_config(const nlohmann::json& patch) {
+    static const std::string preset = [] {
+        const std::string path = std::string(PEDNAV_SOURCE_DIR) + "/configs/foot.json";
+        std::ifstream f(path);
+        if (!f) throw std::runtime_error("cannot open " + path);
+        std::stringstream ss;
+        ss << f.rdbuf();
+        return ss.str();
+    }();
+    return eval::patched_config(preset, patch);
+}
+// For the koroglu walks: their sensor's gyro range is given to the attitude
+// estimator unless the patch sets gyro_range_radps itself.
+std::string koroglu_config(const nlohmann::json& patch) {
+    return foot_config(with_gyro_range(patch, eval::kKorogluGyroRangeRadps));
+}
 const std::string& preset() {
     static const std::string cfg = foot_config(nlohmann::json::object());
     return cfg;
@@ -25,8 +53,8 @@ std::string with_ekf(const nlohmann::json& params) { return foot_config(ekf_patc
 
 // The simulated corridor loop through the preset: every stride found and
 // classed level, and the loop closed within max_pct of the distance.
-void check_loop_closes(const SimCase& c, double max_pct) {
-    const SimScore s = score_sim(c, preset());
+void check_loop_closes(const SimulatedWalk& c, double max_pct) {
+    const SimScore s = score_sim(c, preset(), kPlugins);
     CAPTURE(c.rate_hz);
     CAPTURE(s.closure_m);
     CAPTURE(s.closure_pct);
@@ -37,24 +65,24 @@ void check_loop_closes(const SimCase& c, double max_pct) {
 }  // namespace
 
 TEST_CASE("issue 3: xio-gait-ngimu loops end near their start (causal)") {
-    for (const char* walk : {"short_walk", "long_walk"}) {
-        const XioScore s = score_xio(walk, preset());
+    for (const std::string& walk : eval::xio_walk_names()) {
+        const XioScore s = score_xio(eval::xio_walk(kData, walk), preset(), kPlugins);
         CAPTURE(walk);
         CAPTURE(s.closure_m);
         CAPTURE(s.distance_m);
-        CHECK(s.distance_m > (std::string(walk) == "short_walk" ? 20.0 : 52.0));
+        CHECK(s.distance_m > (walk == "short_walk" ? 20.0 : 52.0));
         CHECK(s.closure_pct < XIO_CLOSURE_PCT_MAX);
     }
 }
 
 TEST_CASE("issue 3: koroglu-foot-gcp stride count equals footprints, error at footprints") {
     const std::string cfg = koroglu_config(nlohmann::json::object());
-    for (int n : {33, 35, 39, 42, 44}) {
-        const KorogluScore s = score_koroglu(n, cfg);
+    for (int n : eval::koroglu_walk_numbers()) {
+        const KorogluScore s = score_koroglu(eval::koroglu_walk(kData, n), cfg, kPlugins);
         CAPTURE(n);
         CAPTURE(s.err_m.mean);
         CAPTURE(s.err_m.max);
-        CAPTURE(s.err_m.final);
+        CAPTURE(s.final_error_m);
         CHECK(s.strides == s.footprints);
         CHECK(s.mean_pct < 1.5);
         // Stride-length scale: the rolling-foot ZUPT keeps the footprint path
@@ -70,9 +98,9 @@ TEST_CASE("issue 3: ipol foot files, 10 m out and 10 m back") {
     // boundaries (the dataset's own, which leaves part of the turn out).
     double sum = 0, sum_annotated = 0;
     int legs = 0;
-    for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"})
+    for (const std::string& t : eval::ipol_trials())
         for (const char* f : {"lf", "rf"}) {
-            const IpolScore s = score_ipol(t, f, preset());
+            const IpolScore s = score_ipol(eval::ipol_walk(kData, t, f), preset(), kPlugins);
             CAPTURE(s.name);
             // Walkers stop past their start (5-2 left foot: 11.0 m from the
             // farthest point, 9.9 m between the annotated boundaries).
@@ -97,9 +125,10 @@ TEST_CASE("ipol: accelerometers rescaled to read gravity at rest bring the two f
     const std::string rescaled = with_ekf({{"accel_rescale_above", 0.0}});
     double diff_read = 0, diff_rescaled = 0;
     int within_3pct = 0;
-    for (const char* t : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
-        const IpolScore lf = score_ipol(t, "lf", preset()), rf = score_ipol(t, "rf", preset());
-        const IpolScore lf2 = score_ipol(t, "lf", rescaled), rf2 = score_ipol(t, "rf", rescaled);
+    for (const std::string& t : eval::ipol_trials()) {
+        const eval::RecordedWalk left = eval::ipol_walk(kData, t, "lf"), right = eval::ipol_walk(kData, t, "rf");
+        const IpolScore lf = score_ipol(left, preset(), kPlugins), rf = score_ipol(right, preset(), kPlugins);
+        const IpolScore lf2 = score_ipol(left, rescaled, kPlugins), rf2 = score_ipol(right, rescaled, kPlugins);
         diff_read += std::abs(lf.leg_out_m - rf.leg_out_m) + std::abs(lf.leg_back_m - rf.leg_back_m);
         diff_rescaled += std::abs(lf2.leg_out_m - rf2.leg_out_m) + std::abs(lf2.leg_back_m - rf2.leg_back_m);
         for (double leg : {lf2.leg_out_m, lf2.leg_back_m, rf2.leg_out_m, rf2.leg_back_m})
@@ -116,7 +145,7 @@ TEST_CASE("ipol: accelerometers rescaled to read gravity at rest bring the two f
 
 TEST_CASE("issue 3: simulated 3 x 40 m corridor loop closes within 0.3 %") {
     for (double rate : {100.0, 200.0, 400.0}) {
-        SimCase c;
+        SimulatedWalk c;
         c.rate_hz = rate;
         c.mounting_rpy_deg[0] = 20;  // tilted on the shoe
         c.mounting_rpy_deg[1] = -30;
@@ -128,14 +157,14 @@ TEST_CASE("issue 3: simulated 3 x 40 m corridor loop closes within 0.3 %") {
 TEST_CASE("gaits, mountings and rates the preset was not tuned on: every stride found, the loop closes") {
     // A slow walk and a jog (3 m/s, the foot flat for 12 % of a stride, 3 g
     // landings), the sensor upside down or standing on its end, at 100 and
-    // 256 Hz. `foot_report shoe '{}' sweep` prints the whole grid (288 runs:
+    // 256 Hz. `pednav report --suite sweep` prints the whole grid (288 runs:
     // median 0.19 %, largest 1.05 %, from the gyro scale-factor errors).
-    const Gait& slow = sweep_gaits().front();
-    const Gait& jog = sweep_gaits().back();
-    for (const Gait& g : {slow, jog}) {
+    const eval::Gait& slow = eval::sweep_gaits().front();
+    const eval::Gait& jog = eval::sweep_gaits().back();
+    for (const eval::Gait& g : {slow, jog}) {
         for (const std::array<double, 2> roll_pitch : {std::array<double, 2>{180, 0}, std::array<double, 2>{0, -80}}) {
             for (double rate : {100.0, 256.0}) {
-                SimCase c;
+                SimulatedWalk c;
                 c.rate_hz = rate;
                 c.mounting_rpy_deg[0] = roll_pitch[0];
                 c.mounting_rpy_deg[1] = roll_pitch[1];
@@ -153,9 +182,10 @@ TEST_CASE("issue 3: clipped gyro: the xio loops clipped at 500 deg/s stay on the
     // read it (200-300 samples per loop), the swings lose rotation. With the
     // range given the attitude estimator restores it; the unclipped run is
     // the truth.
-    for (const char* walk : {"short_walk", "long_walk"}) {
-        const ClipScore off = score_xio_clipped(walk, preset(), 500.0 * M_PI / 180.0, false);
-        const ClipScore on = score_xio_clipped(walk, preset(), 500.0 * M_PI / 180.0, true);
+    for (const std::string& walk : eval::xio_walk_names()) {
+        const eval::RecordedWalk xio = eval::xio_walk(kData, walk);
+        const ClipScore off = score_xio_clipped(xio, preset(), kPlugins, 500.0 * M_PI / 180.0, false);
+        const ClipScore on = score_xio_clipped(xio, preset(), kPlugins, 500.0 * M_PI / 180.0, true);
         CAPTURE(walk);
         CAPTURE(off.footprint_rms_m);
         CAPTURE(on.footprint_rms_m);
@@ -170,13 +200,13 @@ TEST_CASE("issue 3: clipped gyro: the xio loops clipped at 500 deg/s stay on the
 }
 
 TEST_CASE("issue 3: stairs up and down two flights, with and without HUPT") {
-    SimCase c;
+    SimulatedWalk c;
     c.route = "stairs";
     c.rate_hz = 200;
     c.mounting_rpy_deg[1] = 25;
     c.error_scale = 5;  // a poor MEMS unit: 0.2 m/s^2 accelerometer and 1 deg/s gyro biases
-    const SimScore hupt = score_sim(c, preset());
-    const SimScore zupt = score_sim(c, with_ekf({{"hupt", false}}));
+    const SimScore hupt = score_sim(c, preset(), kPlugins);
+    const SimScore zupt = score_sim(c, with_ekf({{"hupt", false}}), kPlugins);
     CAPTURE(hupt.final_err_z_m);
     CAPTURE(zupt.final_err_z_m);
     CAPTURE(hupt.mean_err_z_m);
@@ -190,7 +220,7 @@ TEST_CASE("issue 3: stairs up and down two flights, with and without HUPT") {
     // issue asks for a final height error below 0.3 m).
     CHECK(hupt.final_err_z_m < 0.01);
     // Without the memory (the paper's HUPT) the end keeps the stairs' error.
-    const SimScore paper = score_sim(c, with_ekf({{"level_match_m", 0.0}}));
+    const SimScore paper = score_sim(c, with_ekf({{"level_match_m", 0.0}}), kPlugins);
     CAPTURE(paper.final_err_z_m);
     CHECK(paper.final_err_z_m > hupt.final_err_z_m);
 }
@@ -200,13 +230,13 @@ TEST_CASE("issue 3: HUPT on a nine-minute walk over three floors cuts the mean h
     // through several floors and back): the building tour, 40 stair strides,
     // a poor MEMS unit, three noise seeds.
     for (uint64_t seed : {1, 2, 3}) {
-        SimCase c;
+        SimulatedWalk c;
         c.route = "building_tour";
         c.error_scale = 5;
         c.seed = seed;
         c.mounting_rpy_deg[1] = 25;
-        const SimScore hupt = score_sim(c, preset());
-        const SimScore zupt = score_sim(c, with_ekf({{"hupt", false}}));
+        const SimScore hupt = score_sim(c, preset(), kPlugins);
+        const SimScore zupt = score_sim(c, with_ekf({{"hupt", false}}), kPlugins);
         CAPTURE(seed);
         CAPTURE(hupt.mean_err_z_m);
         CAPTURE(zupt.mean_err_z_m);
@@ -221,10 +251,10 @@ TEST_CASE("issue 3: HUPT on a nine-minute walk over three floors cuts the mean h
 
 TEST_CASE("issue 3: HUPT cuts the mean height error on level floors by at least 80 %") {
     for (double errors : {1.0, 5.0}) {
-        SimCase c;
+        SimulatedWalk c;
         c.error_scale = errors;
-        const SimScore hupt = score_sim(c, preset());
-        const SimScore zupt = score_sim(c, with_ekf({{"hupt", false}}));
+        const SimScore hupt = score_sim(c, preset(), kPlugins);
+        const SimScore zupt = score_sim(c, with_ekf({{"hupt", false}}), kPlugins);
         CAPTURE(errors);
         CAPTURE(hupt.mean_err_z_m);
         CAPTURE(zupt.mean_err_z_m);
@@ -294,20 +324,20 @@ TEST_CASE("noise-free input: mid-interval integration has no height drift per st
     CHECK(first > 0.005);
     CHECK(mid < 0.0005);
     // The whole pipeline, HUPT off, on the same exact data: no height drift.
-    SimCase c;
+    SimulatedWalk c;
     c.rate_hz = 400;
     c.sensor_errors = false;
     c.mounting_rpy_deg[1] = -30;
-    const SimScore s = score_sim(c, with_ekf({{"hupt", false}}));
+    const SimScore s = score_sim(c, with_ekf({{"hupt", false}}), kPlugins);
     CHECK(s.final_err_z_m < 0.01);
     CHECK(s.closure_pct < 0.01);
 }
 
 TEST_CASE("foot plugins reject unknown or bad params, naming the key") {
-    const std::string path = data_dir() + "/xio-gait-ngimu/short_walk.csv";
+    const std::string path = eval::xio_walk(kData, "short_walk").input;
     auto expect_error = [&](const nlohmann::json& patch, const std::string& key) {
         try {
-            run_file(path, foot_config(patch));
+            run_recording(path, foot_config(patch), kPlugins);
             FAIL("accepted a bad config");
         } catch (const std::exception& e) {
             CHECK(std::string(e.what()).find(key) != std::string::npos);
@@ -325,7 +355,7 @@ TEST_CASE("foot plugins reject unknown or bad params, naming the key") {
 }
 
 TEST_CASE("foot pipeline records: one position per sample, deterministic, valid covariances and quaternions") {
-    const std::string path = data_dir() + "/koroglu-foot-gcp/SensorConnectData_35.csv";
+    const std::string path = eval::koroglu_walk(kData, 35).input;
     const io::SensorLog log = io::read_sensor_file(path);
     auto doc = nlohmann::json::parse(preset());
     doc["imu_rate_hz"] = 200.0;
@@ -369,7 +399,7 @@ TEST_CASE("foot pipeline records: one position per sample, deterministic, valid 
 }
 
 TEST_CASE("a start heading given to the engine turns the track (yaw correction at the first sample)") {
-    const std::string path = data_dir() + "/xio-gait-ngimu/short_walk.csv";
+    const std::string path = eval::xio_walk(kData, "short_walk").input;
     const io::SensorLog log = io::read_sensor_file(path);
     auto doc = nlohmann::json::parse(preset());
     doc["imu_rate_hz"] = 400.0;
@@ -404,17 +434,18 @@ TEST_CASE("ZARU that holds the position: no walk's mean error grows by more than
     // the option off in the preset (docs/foot-pipeline.md, "Weak points").
     const std::string preset_cfg = koroglu_config(nlohmann::json::object());
     const std::string hold_cfg = koroglu_config(ekf_patch({{"zaru_moves_position", false}}));
-    for (int n : {33, 35, 39, 42, 44}) {
-        const KorogluScore def = score_koroglu(n, preset_cfg);
-        const KorogluScore hold = score_koroglu(n, hold_cfg);
+    for (int n : eval::koroglu_walk_numbers()) {
+        const eval::RecordedWalk walk = eval::koroglu_walk(kData, n);
+        const KorogluScore def = score_koroglu(walk, preset_cfg, kPlugins);
+        const KorogluScore hold = score_koroglu(walk, hold_cfg, kPlugins);
         CAPTURE(n);
-        CAPTURE(def.err_m.final);
-        CAPTURE(hold.err_m.final);
+        CAPTURE(def.final_error_m);
+        CAPTURE(hold.final_error_m);
         CAPTURE(hold.mean_pct);
         CHECK(hold.strides == hold.footprints);
         CHECK(hold.mean_pct < 1.5);
         CHECK(hold.mean_pct <= def.mean_pct + 0.005);  // measured: equal or lower on every walk
-        if (n == 33 || n == 42) CHECK(hold.err_m.final < def.err_m.final - 0.5);  // 3.08 -> 1.32, 3.41 -> 2.34 m
+        if (n == 33 || n == 42) CHECK(hold.final_error_m < def.final_error_m - 0.5);  // 3.08 -> 1.32, 3.41 -> 2.34 m
     }
 }
 
@@ -424,9 +455,9 @@ TEST_CASE("the dense textbook EKF plugin gives the same track as the hand-writte
     // (koroglu 35) and a simulated stairs walk with HUPT.
     nlohmann::json dense;
     dense["pipelines"]["foot"]["position_filter"]["plugin"] = "org.pednav.foot.ekf15.dense";
-    const std::string koroglu = data_dir() + "/koroglu-foot-gcp/SensorConnectData_35.csv";
-    const ReplayResult fast_run = run_file(koroglu, koroglu_config(nlohmann::json::object()));
-    const ReplayResult dense_run = run_file(koroglu, koroglu_config(dense));
+    const std::string koroglu = eval::koroglu_walk(kData, 35).input;
+    const ReplayResult fast_run = run_recording(koroglu, koroglu_config(nlohmann::json::object()), kPlugins);
+    const ReplayResult dense_run = run_recording(koroglu, koroglu_config(dense), kPlugins);
     REQUIRE(fast_run.positions.size() == dense_run.positions.size());
     CHECK(fast_run.strides.size() == dense_run.strides.size());
     double max_diff_m = 0, max_cov_rel = 0;
@@ -452,10 +483,10 @@ TEST_CASE("the dense textbook EKF plugin gives the same track as the hand-writte
         nlohmann::json form = ekf_patch(params);
         nlohmann::json dense_form = form;
         dense_form.merge_patch(dense);
-        SimCase c;
+        SimulatedWalk c;
         c.route = "stairs";
-        const SimScore fast_sim = score_sim(c, foot_config(form));
-        const SimScore dense_sim = score_sim(c, foot_config(dense_form));
+        const SimScore fast_sim = score_sim(c, foot_config(form), kPlugins);
+        const SimScore dense_sim = score_sim(c, foot_config(dense_form), kPlugins);
         CAPTURE(params.dump());
         CHECK(fast_sim.strides == dense_sim.strides);
         CHECK(std::abs(fast_sim.closure_m - dense_sim.closure_m) < 1e-9);

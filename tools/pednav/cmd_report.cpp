@@ -16,14 +16,18 @@
 
 #include <nlohmann/json.hpp>
 #include <pednav_engine/replay.hpp>
+#include <pednav_eval/config_patch.hpp>
 #include <pednav_eval/metrics.hpp>
 #include <pednav_eval/truth_readers.hpp>
+#include <pednav_eval/walks.hpp>
+#include <pednav_foot_eval/patches.hpp>
 #include <pednav_io/sensor_log.hpp>
 #include <pednav_plot/eval_plot.hpp>
 #include <pednav_plot/svg.hpp>
 #include <pednav_sim/simulate.hpp>
 
 #include "cli_common.hpp"
+#include "report_suites.hpp"
 
 namespace {
 
@@ -31,11 +35,19 @@ using namespace pednav;
 
 constexpr const char* kUsage =
     "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,waist] [--only TEXT] [--seed N]\n"
-    "                     [--no-recordings] [--no-sim] [--plugin-dir DIR]\n"
-    "  --data    the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the "
+    "                     [--no-recordings] [--no-sim] [--plugin-dir DIR] [--patch JSON] [--detector NAME]\n"
+    "       pednav report --suite full|quick|sim|sweep|tables|hupt|clip [--data DIR] [--plugin-dir DIR]\n"
+    "                     [--patch JSON] [--detector NAME]\n"
+    "  --data      the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the "
     "build)\n"
-    "  --only    run only the walks whose name contains TEXT\n"
-    "Writes DIR/accuracy.md, DIR/accuracy.json and DIR/plots/<mount>-<walk>.svg.\n";
+    "  --only      run only the walks whose name contains TEXT\n"
+    "  --patch     a JSON merge patch applied to each mount's preset (configs/<mount>.json)\n"
+    "  --detector  the foot pipeline's stance detector: shoe (the preset's) or multicondition\n"
+    "  --suite     accuracy (the default) writes DIR/accuracy.md, DIR/accuracy.json and\n"
+    "              DIR/plots/<mount>-<walk>.svg; the foot suites print the foot pipeline's own tables:\n"
+    "              full (simulated walks at 400 Hz, then every foot recording), quick (xio and koroglu),\n"
+    "              sim (simulated walks at 100, 200, 400 Hz), sweep (gaits, mountings, rates), tables\n"
+    "              (koroglu, ZUPT only and with ZARU), hupt (HUPT against ZUPT only), clip (clipped gyro)\n";
 
 bool exists(const std::string& p) {
     struct stat st {};
@@ -51,8 +63,8 @@ void make_dirs(const std::string& p) {
 // One walk to run: a shared recording with its truth, or a simulated route.
 struct Walk {
     std::string name, mount;
-    std::string input;  // recording path (empty: simulated)
-    std::string route;  // built-in route name (simulated)
+    std::string input;               // recording path (empty: simulated)
+    eval::SimulatedWalk simulated;   // when input is empty
     eval::Truth truth;
     eval::Alignment alignment = eval::Alignment::start_point;
     bool give_start = false;  // start the engine at the truth's start point and heading
@@ -65,58 +77,25 @@ struct Result {
     std::string error, plot;
 };
 
-// A walk whose truth cannot be read is reported through `skip` and left out.
+// The walk list's recordings that are in `data`; a walk whose truth cannot be
+// read is reported through `skip` and left out.
 template <typename Skip>
 std::vector<Walk> recording_walks(const std::string& data, Skip skip) {
     std::vector<Walk> w;
-    auto add = [&](Walk walk, const std::string& truth_file, auto read) {
+    for (const eval::RecordedWalk& recorded : eval::recorded_walks(data)) {
+        if (!exists(recorded.input)) continue;
+        Walk walk{recorded.name, recorded.mount, recorded.input, {}, {}, recorded.alignment, recorded.give_start};
         try {
-            if (!truth_file.empty()) walk.truth = read();
+            walk.truth = eval::read_walk_truth(recorded);
             w.push_back(std::move(walk));
         } catch (const std::exception& e) {
             skip(walk.name, e);
         }
-    };
-    const std::string kor = data + "/koroglu-foot-gcp/SensorConnectData_";
-    for (int n : {33, 35, 39, 42, 44}) {
-        const std::string base = kor + std::to_string(n);
-        if (!exists(base + ".csv")) continue;
-        add({"koroglu-" + std::to_string(n), "foot", base + ".csv", "", {}, eval::Alignment::fitted, false},
-            base + "_gcp.csv", [&] { return eval::read_koroglu_gcp(base + "_gcp.csv"); });
-    }
-    for (const char* name : {"short_walk", "long_walk"}) {
-        const std::string path = data + "/xio-gait-ngimu/" + name + ".csv";
-        if (!exists(path)) continue;
-        add({std::string("xio-") + name, "foot", path, "", eval::make_loop_truth(), eval::Alignment::none,
-             false},
-            "", [] { return eval::Truth{}; });
-    }
-    for (const char* trial : {"1-1", "1-2", "5-1", "5-2", "10-1", "10-2", "15-1", "19-1"}) {
-        const std::string base = data + "/ipol-gait-waist-feet/" + trial;
-        if (!exists(base + ".json")) continue;
-        for (const std::string part : {"lf", "rf", "lb"}) {
-            const std::string feet = part == "lb" ? "both" : (part == "lf" ? "left" : "right");
-            add({std::string("ipol-") + trial + "-" + part,
-                 part == "lb" ? "waist" : "foot",
-                 base + "_" + part + ".txt",
-                 "",
-                 {},
-                 eval::Alignment::none,
-                 false},
-                base + ".json", [&] { return eval::read_ipol_steps(base + ".json", 100.0, 10.0, feet); });
-        }
-    }
-    for (const char* walk : {"user1_straight", "user1_8_shape", "user1_square_2x", "user3_forward"}) {
-        const std::string dir = data + "/humolire-phone/" + walk;
-        if (!exists(dir + "/keypoints.json")) continue;
-        add({std::string("humolire-") + walk, "chest", dir, "", {}, eval::Alignment::none, true}, dir,
-            [&] { return eval::read_humolire(dir); });
     }
     return w;
 }
 
-Result run_walk(const Walk& walk, const std::string& config, const std::vector<std::string>& plugin_dirs,
-                uint64_t seed) {
+Result run_walk(const Walk& walk, const std::string& config, const std::vector<std::string>& plugin_dirs) {
     Result r;
     r.walk = walk;
     ReplayOptions o;
@@ -127,11 +106,8 @@ Result run_walk(const Walk& walk, const std::string& config, const std::vector<s
     io::SensorLog log;
     sim::SimOutput simulated;
     if (walk.input.empty()) {
-        const sim::Route route = sim::builtin_route(walk.route);
-        sim::SimOptions so;
-        so.mount = walk.mount;
-        so.seed = seed;
-        simulated = sim::simulate(route, so);
+        const sim::Route route = eval::sim_route(walk.simulated);
+        simulated = sim::simulate(route, eval::sim_options(walk.simulated));
         records = simulated.records();
         r.walk.truth = eval::sim_truth(simulated, route);
         // The walker is told where it starts and which way it faces, as in an app.
@@ -276,19 +252,61 @@ std::string default_data_dir() {
     return cli::executable_dir() + "/../../shared/data";
 }
 
+nlohmann::json parse_patch(const std::string& text) {
+    nlohmann::json patch;
+    try {
+        patch = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+        throw pednav::cli::UsageError(std::string("--patch: not JSON: ") + e.what());
+    }
+    if (!patch.is_object()) throw pednav::cli::UsageError("--patch: expected a JSON object, got " + patch.dump());
+    return patch;
+}
+
+// The stance detector's patch with the user's patch merged in.
+nlohmann::json foot_patch(const std::string& detector, const nlohmann::json& patch) {
+    nlohmann::json p;
+    try {
+        p = foot_eval::detector_patch(detector);
+    } catch (const std::exception& e) {
+        throw pednav::cli::UsageError(std::string("--detector: ") + e.what());
+    }
+    p.merge_patch(patch);
+    return p;
+}
+
+// pednav report --suite NAME (a foot suite): printed on stdout.
+int run_suite(const std::string& suite, pednav::cli::FootSuiteSetup setup) {
+    try {
+        if (setup.data_dir.empty()) setup.data_dir = default_data_dir();
+        if (pednav::cli::foot_suite_reads_recordings(suite) && !exists(setup.data_dir))
+            throw std::runtime_error("no shared recordings at " + setup.data_dir + " (--data)");
+        setup.preset_json = cli::read_text_file(cli::default_config_dir() + "/foot.json");
+        pednav::cli::run_foot_suite(suite, setup);
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "pednav report: %s\n", e.what());
+        return 1;
+    }
+}
+
 }  // namespace
 
 const char* const pednav_cmd_report_usage = kUsage;
 
 int pednav_cmd_report(const std::vector<std::string>& args) {
-    std::string out, data, only;
+    std::string out, data, only, suite = "accuracy", detector, accuracy_option;
     std::vector<std::string> mounts{"foot", "chest", "waist"}, plugin_dirs{cli::default_plugin_dir()};
     uint64_t seed = 1;
-    bool recordings = true, simulated = true;
+    bool recordings = true, simulated = true, patched = false;
+    nlohmann::json patch = nlohmann::json::object();
     pednav::cli::Args in(args, kUsage);
     while (!in.done()) {
         const std::string a = in.next();
         auto value = [&] { return in.value(a); };
+        if (a == "--out" || a == "--only" || a == "--seed" || a == "--no-recordings" || a == "--no-sim" ||
+            a == "--mounts")
+            accuracy_option = a;
         if (a == "--out")
             out = value();
         else if (a == "--data")
@@ -308,8 +326,25 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             std::string list = value() + ",";
             for (size_t p = 0, q; (q = list.find(',', p)) != std::string::npos; p = q + 1)
                 if (q > p) mounts.push_back(list.substr(p, q - p));
+        } else if (a == "--suite")
+            suite = value();
+        else if (a == "--patch") {
+            patch = parse_patch(value());
+            patched = true;
+        } else if (a == "--detector") {
+            detector = value();
+            patched = true;
         } else
             throw pednav::cli::UsageError("unknown option " + a);
+    }
+    const nlohmann::json detector_and_patch = foot_patch(detector.empty() ? "shoe" : detector, patch);
+    if (suite != "accuracy") {
+        const auto& names = pednav::cli::foot_suite_names();
+        if (std::find(names.begin(), names.end(), suite) == names.end())
+            throw pednav::cli::UsageError("unknown suite '" + suite + "' (accuracy, full, quick, sim, sweep, tables, hupt, clip)");
+        if (!accuracy_option.empty())
+            throw pednav::cli::UsageError(accuracy_option + " is an option of the accuracy suite, not of --suite " + suite);
+        return run_suite(suite, {"", detector.empty() ? "shoe" : detector, detector_and_patch, data, plugin_dirs});
     }
     if (out.empty()) throw pednav::cli::UsageError("--out is required");
     try {
@@ -319,24 +354,28 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
         for (const std::string& m : mounts) {
             const std::string preset = cli::default_config_dir() + "/" + m + ".json";
             if (exists(preset))
-                configs[m] = cli::read_text_file(preset);
+                configs[m] = patched ? eval::patched_config(cli::read_text_file(preset),
+                                                            m == "foot" ? detector_and_patch : patch)
+                                     : cli::read_text_file(preset);
             else
                 std::fprintf(stderr, "pednav report: no preset for mount %s (%s): skipped\n", m.c_str(),
                              preset.c_str());
         }
         std::vector<Walk> walks;
+        size_t failed = 0;  // walks that could not be read or run: the report is written, the exit says so
         if (recordings) {
             if (!exists(data))
-                std::fprintf(stderr, "pednav report: no shared recordings at %s: skipped\n", data.c_str());
-            else
-                walks = recording_walks(data, [](const std::string& what, const std::exception& e) {
-                    std::fprintf(stderr, "pednav report: %s: %s (skipped)\n", what.c_str(), e.what());
-                });
+                throw std::runtime_error("no shared recordings at " + data +
+                                         " (--data DIR, or --no-recordings for the simulated walks only)");
+            walks = recording_walks(data, [&failed](const std::string& what, const std::exception& e) {
+                std::fprintf(stderr, "pednav report: %s: %s (skipped)\n", what.c_str(), e.what());
+                ++failed;
+            });
         }
         if (simulated)
             for (const std::string& m : mounts)
-                for (const std::string& route : sim::builtin_route_names())
-                    walks.push_back({"sim-" + route, m, "", route, {}, eval::Alignment::start_point, false});
+                for (const eval::SimulatedWalk& sw : eval::builtin_sim_walks(m, seed))
+                    walks.push_back({"sim-" + sw.route, m, "", sw, {}, eval::Alignment::start_point, false});
         std::vector<Result> results;
         nlohmann::json js = nlohmann::json::array();
         for (const Walk& w : walks) {
@@ -345,7 +384,7 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             std::fprintf(stderr, "%-6s %-28s ", w.mount.c_str(), w.name.c_str());
             Result r;
             try {
-                r = run_walk(w, configs[w.mount], plugin_dirs, seed);
+                r = run_walk(w, configs[w.mount], plugin_dirs);
             } catch (const std::exception& e) {
                 r.walk = w;
                 r.error = e.what();
@@ -364,13 +403,15 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
                 std::isfinite(r.duration_s) ? nlohmann::json(r.duration_s) : nlohmann::json(nullptr);
             j["plot"] = r.plot;
             j["error"] = r.error;
+            if (!r.error.empty()) ++failed;
             js.push_back(j);
             results.push_back(std::move(r));
         }
         plot::write_text_file(out + "/accuracy.md", markdown(results, seed));
         plot::write_text_file(out + "/accuracy.json", js.dump(2) + "\n");
         std::printf("%zu walks -> %s/accuracy.md\n", results.size(), out.c_str());
-        return 0;
+        if (failed) std::fprintf(stderr, "pednav report: %zu walk%s failed (named above)\n", failed, failed == 1 ? "" : "s");
+        return failed ? 1 : 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "pednav report: %s\n", e.what());
         return 1;

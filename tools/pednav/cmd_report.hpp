@@ -1,7 +1,8 @@
 // pednav report: run every shared recording that has a ground truth and every
 // built-in simulated walk through the mount presets, score each, and write a
 // markdown accuracy table (per walk, and percentiles across walks per mount),
-// the same as JSON, and one SVG per walk.
+// the same as JSON, and one SVG per walk; or, with --suite, print one of the
+// foot pipeline's own tables (report_suites.hpp).
 #pragma once
 
 #include <string>

@@ -5,30 +5,31 @@
 
 namespace pednav::eval {
 
-double percentile(std::vector<double> v, double q) {
+double percentile(std::vector<double> v, double q, PercentileMethod method) {
     if (v.empty()) return NAN;
     std::sort(v.begin(), v.end());
     const double rank = (static_cast<double>(v.size()) - 1.0) * std::clamp(q, 0.0, 100.0) / 100.0;
+    if (method == PercentileMethod::higher) return v[static_cast<size_t>(std::ceil(rank))];
     const size_t lo = static_cast<size_t>(std::floor(rank));
     const size_t hi = std::min(lo + 1, v.size() - 1);
     return v[lo] + (rank - static_cast<double>(lo)) * (v[hi] - v[lo]);
 }
 
-double standard_deviation(const std::vector<double>& v) {
-    if (v.empty()) return NAN;
+double standard_deviation(const std::vector<double>& v, size_t ddof) {
+    if (v.size() <= ddof) return NAN;
     const double mean = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
     double s = 0.0;
     for (double x : v) s += (x - mean) * (x - mean);
-    return std::sqrt(s / static_cast<double>(v.size()));
+    return std::sqrt(s / static_cast<double>(v.size() - ddof));
 }
 
-AxisStats axis_stats(const std::vector<double>& v) {
+AxisStats axis_stats(const std::vector<double>& v, size_t ddof) {
     AxisStats a;
     if (v.empty()) return a;
     a.min = *std::min_element(v.begin(), v.end());
     a.max = *std::max_element(v.begin(), v.end());
     a.mean = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-    a.sd = standard_deviation(v);
+    a.sd = standard_deviation(v, ddof);
     return a;
 }
 

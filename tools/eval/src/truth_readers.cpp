@@ -331,7 +331,8 @@ Truth make_loop_truth(double length_m) {
     return t;
 }
 
-Truth read_ipol_steps(const std::string& path, double rate_hz, double leg_length_m, const std::string& feet) {
+Truth read_ipol_steps(const std::string& path, double rate_hz, double leg_length_m, const std::string& feet,
+                      bool whole_recording) {
     if (feet != "both" && feet != "left" && feet != "right")
         throw std::runtime_error("ipol steps: feet must be both, left or right");
     const nlohmann::json j = read_json(path);
@@ -347,7 +348,8 @@ Truth read_ipol_steps(const std::string& path, double rate_hz, double leg_length
             if ((feet == "left" && key[0] != 'L') || (feet == "right" && key[0] != 'R')) continue;
             for (const auto& ev : j.at(key)) {
                 const double end = ev.at(1).get<double>();
-                if (ev.at(0).get<double>() >= tb0 && end <= tb1) t.step_times_s.push_back(end / rate_hz);
+                if (whole_recording || (ev.at(0).get<double>() >= tb0 && end <= tb1))
+                    t.step_times_s.push_back(end / rate_hz);
             }
         }
         std::sort(t.step_times_s.begin(), t.step_times_s.end());

@@ -24,13 +24,19 @@ struct ErrorStats {  // of non-negative errors
     size_t n = 0;
     double mean = NAN, median = NAN, p75 = NAN, sd = NAN, max = NAN, rms = NAN;
 };
-AxisStats axis_stats(const std::vector<double>& values);
+// sd divides by n - ddof (see standard_deviation).
+AxisStats axis_stats(const std::vector<double>& values, size_t ddof = 0);
 ErrorStats error_stats(const std::vector<double>& values);
-// Percentile q in [0, 100], linear interpolation between order statistics
-// (rank (n - 1) q / 100, as numpy's default); NaN for an empty input.
-double percentile(std::vector<double> values, double q);
-// Population standard deviation (divide by n), as the papers' tables.
-double standard_deviation(const std::vector<double>& values);
+// How a percentile falls between two order statistics, at rank (n - 1) q / 100
+// (numpy's methods of the same names): linear interpolates between them, higher
+// takes the upper one (the median of an even count is then its upper middle value).
+enum class PercentileMethod { linear, higher };
+// Percentile q in [0, 100]; NaN for an empty input.
+double percentile(std::vector<double> values, double q, PercentileMethod method = PercentileMethod::linear);
+// Standard deviation dividing the squared deviations by n - ddof: 0 (the
+// default) the population SD, as the papers' tables; 1 the sample SD. NaN when
+// n <= ddof.
+double standard_deviation(const std::vector<double>& values, size_t ddof = 0);
 // a - b wrapped to (-180, 180].
 double angle_diff_deg(double a_deg, double b_deg);
 // IPIN competition score: 75th percentile of horizontal error + 15 m per floor wrong.

@@ -53,8 +53,9 @@ Truth make_loop_truth(double length_m = NAN);
 // (times at each step's heel strike), and the two 10 m legs (start of trial to
 // start of U-turn, end of U-turn to end of trial). feet: "both" (a waist
 // sensor's steps: left + right), "left" or "right" (a foot sensor's strides).
+// whole_recording: every annotated footstep, also those before and after the trial.
 Truth read_ipol_steps(const std::string& json_path, double rate_hz = 100.0, double leg_length_m = 10.0,
-                      const std::string& feet = "both");
+                      const std::string& feet = "both", bool whole_recording = false);
 
 // By kind name: "sim", "koroglu", "humolire", "ipin", "loop" (or "loop:LENGTH_M"),
 // "ipol"; "auto" guesses from the path.

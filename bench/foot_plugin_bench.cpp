@@ -18,17 +18,30 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 #include <pednav/pn_plugin.h>
+#include <pednav_eval/config_patch.hpp>
+#include <pednav_eval/metrics.hpp>
+#include <pednav_foot_eval/patches.hpp>
 #include <pednav_sim/simulate.hpp>
 
-#include "foot_eval.hpp"
 #include "record_copy.hpp"
 
 namespace {
+
+std::string read_text(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("cannot open " + path);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
 
 struct Node {
     const pnp_node_ops_t* ops = nullptr;
@@ -101,8 +114,9 @@ int main(int argc, char** argv) {
         else if (a == "--passes" && i + 1 < argc) passes = std::max(1, std::stoi(argv[++i]));
     }
     try {
-        namespace fe = pednav::foot_eval;
-        nlohmann::json cfg = nlohmann::json::parse(fe::foot_config(fe::ekf_patch(nlohmann::json::parse(patch))));
+        const std::string preset = read_text(std::string(PEDNAV_CONFIG_DIR) + "/foot.json");
+        nlohmann::json cfg = nlohmann::json::parse(
+            pednav::eval::patched_config(preset, pednav::foot_eval::ekf_patch(nlohmann::json::parse(patch))));
         auto& pipe = cfg["pipelines"]["foot"];
         if (!filter.empty()) pipe["position_filter"]["plugin"] = filter;
 
@@ -169,9 +183,8 @@ int main(int argc, char** argv) {
             if (callgrind) CALLGRIND_STOP_INSTRUMENTATION;
             seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
-        std::vector<double> sorted = seconds;
-        std::sort(sorted.begin(), sorted.end());
-        const double best = sorted.front(), median = sorted[sorted.size() / 2];
+        const double best = pednav::eval::percentile(seconds, 0),
+                     median = pednav::eval::percentile(seconds, 50, pednav::eval::PercentileMethod::higher);
         std::printf("{\"route\": \"%s\", \"rate_hz\": %.0f, \"samples\": %zu, \"positions\": %zu, \"passes\": %zu, "
                     "\"best_seconds\": %.4f, \"samples_per_second\": %.0f, \"median_samples_per_second\": %.0f, "
                     "\"ns_per_sample\": %.1f}\n",
