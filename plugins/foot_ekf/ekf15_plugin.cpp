@@ -3,13 +3,13 @@
 // IMU sample, one stride per stance, attitude/gyro-bias feedback.
 #include <cmath>
 
-#include <pednav_foot/foot_ins.hpp>
+#include <pednav_zupt_ins/foot_ins.hpp>
 #include <pednav_sdk/library.hpp>
 
 namespace {
 using namespace pednav::sdk;
-using pednav::foot::Quat;
-using pednav::foot::Vec3;
+using pednav::navmath::Quat;
+using pednav::navmath::Vec3;
 
 // The foot INS as a position filter, over either covariance algebra (Ins is
 // FootIns or FootInsDense); the two plugins below differ only in their ids.
@@ -48,7 +48,7 @@ public:
     }
     void on_flush() override {
         if (pending_) process(att_);
-        pednav::foot::StrideOut s;
+        pednav::zupt_ins::StrideOut s;
         if (ins_.finish(s)) emit_stride(s);
     }
     bool set_start(const double pos[3], double heading_rad) override {
@@ -89,7 +89,7 @@ private:
             emit(c);
         }
     }
-    void emit_stride(const pednav::foot::StrideOut& s) {
+    void emit_stride(const pednav::zupt_ins::StrideOut& s) {
         auto r = make_record<pn_stride_t>(s.t_end_ns);
         r.t_start_ns = s.t_start_ns;
         for (int i = 0; i < 3; ++i) r.displacement_enu_m[i] = s.displacement[i];
@@ -101,8 +101,8 @@ private:
         emit(r);
     }
 
-    static pednav::foot::FootInsConfig read(Params& p) {
-        pednav::foot::FootInsConfig c;
+    static pednav::zupt_ins::FootInsConfig read(Params& p) {
+        pednav::zupt_ins::FootInsConfig c;
         c.zupt = p.boolean("zupt", c.zupt);
         c.zaru = p.boolean("zaru", c.zaru);
         c.hupt = p.boolean("hupt", c.hupt);
@@ -140,7 +140,7 @@ private:
     }
 
     Ins ins_;
-    pednav::foot::SampleOut out_;
+    pednav::zupt_ins::SampleOut out_;
     pn_imu_t imu_{};
     pn_attitude_t att_{};
     bool pending_ = false;
@@ -148,7 +148,7 @@ private:
     bool stance_ = false;
 };
 
-class FootEkf15 : public FootInsFilter<pednav::foot::FootIns> {
+class FootEkf15 : public FootInsFilter<pednav::zupt_ins::FootIns> {
 public:
     static constexpr const char* kId = "org.pednav.foot.ekf15";
     static constexpr const char* kName = "foot INS, 15-state error-state EKF";
@@ -159,7 +159,7 @@ public:
     using FootInsFilter::FootInsFilter;
 };
 
-class FootEkf15Dense : public FootInsFilter<pednav::foot::FootInsDense> {
+class FootEkf15Dense : public FootInsFilter<pednav::zupt_ins::FootInsDense> {
 public:
     static constexpr const char* kId = "org.pednav.foot.ekf15.dense";
     static constexpr const char* kName = "foot INS, 15-state error-state EKF, dense reference";

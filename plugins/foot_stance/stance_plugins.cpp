@@ -3,20 +3,20 @@
 // latency_ns() after it (centred windows).
 #include <memory>
 
-#include <pednav_foot/stance_detector.hpp>
+#include <pednav_zupt_ins/stance_detector.hpp>
 #include <pednav_sdk/library.hpp>
 
 namespace {
 using namespace pednav::sdk;
-using pednav::foot::StanceDecision;
-using pednav::foot::StanceDetector;
+using pednav::zupt_ins::StanceDecision;
+using pednav::zupt_ins::StanceDetector;
 
 // Ring buffers are sized for this rate or twice the nominal rate, whichever
 // is larger, so the windows hold at any rate up to it.
 double capacity_rate(const CreateContext& ctx) { return std::max(2.0 * ctx.imu_rate_hz, 1000.0); }
 
 // The window parameters both detectors share (defaults from the detector's config).
-void read_windows(Params& p, pednav::foot::StanceWindows& w) {
+void read_windows(Params& p, pednav::zupt_ins::StanceWindows& w) {
     w.window_s = p.number("window_s", w.window_s, 0.0, 2.0);
     w.median_window_s = p.number("median_window_s", w.median_window_s, 0.0, 2.0);
     w.adaptive_window_s = p.number("adaptive_window_s", w.adaptive_window_s, 0.0, 10.0);
@@ -61,7 +61,7 @@ public:
         "(foot-imu-zupt-zaru-ekf sec. 2.3), windows in seconds";
 
     MultiConditionStance(Params& p, const CreateContext& ctx) {
-        pednav::foot::MultiConditionConfig c;
+        pednav::zupt_ins::MultiConditionConfig c;
         c.accel_min_mps2 = p.number("accel_min_mps2", c.accel_min_mps2, 0.0, 100.0);
         c.accel_max_mps2 = p.number("accel_max_mps2", c.accel_max_mps2, 0.0, 100.0);
         c.accel_std_max_mps2 = p.number("accel_std_max_mps2", c.accel_std_max_mps2, 0.0, 100.0);
@@ -85,7 +85,7 @@ public:
         "adaptive threshold relative to the minimum over a gait cycle, majority filter";
 
     ShoeStance(Params& p, const CreateContext& ctx) {
-        pednav::foot::ShoeConfig c;
+        pednav::zupt_ins::ShoeConfig c;
         c.accel_sd_mps2 = p.number("accel_sd_mps2", c.accel_sd_mps2, 1e-6, 100.0);
         c.gyro_sd_radps = p.number("gyro_sd_radps", c.gyro_sd_radps, 1e-6, 100.0);
         c.threshold = p.number("threshold", c.threshold, 0.0, 1e12);

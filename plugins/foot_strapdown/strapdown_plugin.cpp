@@ -6,13 +6,14 @@
 // initial_heading_deg. A heading given to the engine reaches this plugin from
 // the position filter (set_start) as a yaw ATTITUDE_CORRECTION at the first
 // sample, the same path as every other correction.
-#include <pednav_foot/strapdown.hpp>
+#include <pednav_navmath/heading.hpp>
+#include <pednav_navmath/strapdown.hpp>
 #include <pednav_sdk/library.hpp>
 
 namespace {
 using namespace pednav::sdk;
-using pednav::foot::Quat;
-using pednav::foot::Vec3;
+using pednav::navmath::Quat;
+using pednav::navmath::Vec3;
 
 class FootStrapdown : public AttitudeEstimator {
 public:
@@ -41,7 +42,7 @@ public:
         r.q_enu_from_body[1] = q.x();
         r.q_enu_from_body[2] = q.y();
         r.q_enu_from_body[3] = q.z();
-        r.heading_rad = pednav::foot::heading_of(q);
+        r.heading_rad = pednav::navmath::heading_of(q);
         for (int i = 0; i < 3; ++i) r.gyro_bias_radps[i] = sd_.gyro_bias()[i];
         emit(r);
     }
@@ -58,8 +59,8 @@ public:
     }
 
 private:
-    static pednav::foot::StrapdownConfig read(Params& p) {
-        pednav::foot::StrapdownConfig c;
+    static pednav::navmath::StrapdownConfig read(Params& p) {
+        pednav::navmath::StrapdownConfig c;
         c.align_still_s = p.number("align_still_s", c.align_still_s, 0.0, 600.0);
         c.align_min_still_s = p.number("align_min_still_s", c.align_min_still_s, 0.0, 600.0);
         c.align_timeout_s = p.number("align_timeout_s", c.align_timeout_s, 0.0, 3600.0);
@@ -78,7 +79,7 @@ private:
         return c;
     }
 
-    pednav::foot::Strapdown sd_;
+    pednav::navmath::Strapdown sd_;
 };
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "pednav_foot/ekf15.hpp"
+#include "pednav_zupt_ins/ekf15.hpp"
 
 // The covariance kernels are also compiled for AVX (4 doubles per vector) and
 // picked at load time on x86-64 with GCC. Only the vector width differs: no
@@ -35,7 +35,9 @@ typedef double v4d __attribute__((vector_size(32)));
 #define ld4(p) (*reinterpret_cast<const v4d*>(p))
 #define st4(p, v) (*reinterpret_cast<v4d*>(p) = (v))
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
+
+using navmath::skew;
 
 namespace {
 
@@ -428,4 +430,4 @@ void Ekf15::update_block3(int i0, const double z[3], const double var[3], uint32
     else block3_kernel(i0, z, var, hold_mask);
 }
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins

@@ -27,7 +27,7 @@
 #include <memory>
 #include <type_traits>
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
 
 struct StanceDecision {
     int64_t t_ns;     // time of the classified IMU sample
@@ -439,4 +439,4 @@ private:
     int64_t ones_ = 0;
 };
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins

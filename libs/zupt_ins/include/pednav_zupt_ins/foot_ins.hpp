@@ -27,7 +27,7 @@
 #include "ekf15_dense.hpp"
 #include "level_memory.hpp"
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
 
 struct FootInsConfig {
     bool zupt = true;
@@ -182,4 +182,4 @@ using FootInsDense = FootInsT<Ekf15Dense>;
 extern template class FootInsT<Ekf15>;
 extern template class FootInsT<Ekf15Dense>;
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins

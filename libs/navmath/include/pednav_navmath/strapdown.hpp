@@ -1,5 +1,6 @@
-// Initial alignment and bias-compensated attitude integration of a
-// foot-mounted IMU (sensor axes, any orientation on the shoe).
+// Initial alignment and bias-compensated attitude integration of a strapdown
+// IMU (sensor axes, any orientation on the body; the foot attitude estimator
+// runs it on the shoe).
 //
 // Alignment: the first still period of at least align_still_s (or, when the
 // motion starts earlier, of at least align_min_still_s) gives roll and pitch
@@ -17,9 +18,10 @@
 
 #include <cstdint>
 
+#include "alignment.hpp"
 #include "so3.hpp"
 
-namespace pednav::foot {
+namespace pednav::navmath {
 
 struct StrapdownConfig {
     double align_still_s = 1.0;           // still time that triggers the alignment
@@ -92,4 +94,4 @@ private:
     double clip_time_[3] = {0, 0, 0};
 };
 
-}  // namespace pednav::foot
+}  // namespace pednav::navmath

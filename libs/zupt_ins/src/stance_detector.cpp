@@ -1,8 +1,8 @@
-#include "pednav_foot/stance_detector.hpp"
+#include "pednav_zupt_ins/stance_detector.hpp"
 
 #include <algorithm>
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
 
 namespace {
 int64_t half_ns(double window_s) { return static_cast<int64_t>(std::llround(window_s * 0.5e9)); }
@@ -55,4 +55,4 @@ StanceDetector::StanceDetector(const ShoeConfig& c, double max_rate_hz) : Stance
     shoe_iw_ = 1.0 / (c.gyro_sd_radps * c.gyro_sd_radps);
 }
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins

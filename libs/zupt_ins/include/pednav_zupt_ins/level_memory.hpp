@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
 
 class LevelMemory {
 public:
@@ -41,4 +41,4 @@ private:
     int n_ = 0;
 };
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins

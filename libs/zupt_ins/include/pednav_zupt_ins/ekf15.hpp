@@ -16,9 +16,13 @@
 #include <cstdint>
 #include <cstring>
 
-#include "so3.hpp"
+#include <pednav_navmath/so3.hpp>
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
+
+using navmath::Mat3;
+using navmath::Quat;
+using navmath::Vec3;
 
 class Ekf15 {
 public:
@@ -153,4 +157,4 @@ private:
     bool joseph_ = true;
 };
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins

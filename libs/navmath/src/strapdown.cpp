@@ -1,8 +1,8 @@
-#include "pednav_foot/strapdown.hpp"
+#include "pednav_navmath/strapdown.hpp"
 
 #include <algorithm>
 
-namespace pednav::foot {
+namespace pednav::navmath {
 
 void Strapdown::reset_still() {
     sum_a_.setZero();
@@ -140,4 +140,4 @@ void Strapdown::set_attitude(const Quat& q) {
     aligned_ = true;
 }
 
-}  // namespace pednav::foot
+}  // namespace pednav::navmath

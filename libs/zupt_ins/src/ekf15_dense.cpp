@@ -1,8 +1,10 @@
-#include "pednav_foot/ekf15_dense.hpp"
+#include "pednav_zupt_ins/ekf15_dense.hpp"
 
 #include <Eigen/LU>
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
+
+using navmath::skew;
 
 void Ekf15Dense::reset_covariance(const double* diag) {
     P_.setZero();
@@ -86,4 +88,4 @@ void Ekf15Dense::update_block3(int i0, const double z[3], const double var[3], u
     update<3>(i0, z, var, hold_mask);
 }
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins

@@ -1,10 +1,19 @@
-#include "pednav_foot/foot_ins.hpp"
+#include "pednav_zupt_ins/foot_ins.hpp"
 
 #include <algorithm>
 
 #include <pednav/pn_types.h>
+#include <pednav_navmath/angles.hpp>
+#include <pednav_navmath/heading.hpp>
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
+
+using navmath::heading_of;
+using navmath::quat_exp;
+using navmath::quat_log;
+using navmath::renormalize;
+using navmath::rotate;
+using navmath::wrap_pi;
 
 template <class Filter>
 FootInsT<Filter>::FootInsT(const FootInsConfig& c)
@@ -279,4 +288,4 @@ bool FootInsT<Filter>::finish(StrideOut& s) {
 template class FootInsT<Ekf15>;
 template class FootInsT<Ekf15Dense>;
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins

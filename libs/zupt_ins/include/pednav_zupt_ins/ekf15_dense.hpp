@@ -9,7 +9,7 @@
 
 #include "ekf15.hpp"
 
-namespace pednav::foot {
+namespace pednav::zupt_ins {
 
 class Ekf15Dense {
 public:
@@ -53,4 +53,4 @@ private:
     bool joseph_ = true;
 };
 
-}  // namespace pednav::foot
+}  // namespace pednav::zupt_ins
