@@ -18,7 +18,9 @@
 // The three stages run as one pass per input sample over two rings (the raw
 // samples of stage 1; the statistics and stage-2 decisions of stages 2 and 3,
 // indexed by the same sample number), with their indices in the object and
-// no callbacks between the stages.
+// no callbacks between the stages. The windows, the running minimum and the
+// majority vote are pednav_signal's (centred_window.hpp, running_minimum.hpp,
+// majority_vote.hpp).
 #pragma once
 
 #include <algorithm>
@@ -26,6 +28,10 @@
 #include <cstdint>
 #include <memory>
 #include <type_traits>
+
+#include <pednav_signal/centred_window.hpp>
+#include <pednav_signal/majority_vote.hpp>
+#include <pednav_signal/running_minimum.hpp>
 
 namespace pednav::zupt_ins {
 
@@ -132,17 +138,6 @@ private:
         double am;  // |a| - kAccelNormOffset
     };
 
-    // Moves a stage's window [lo, hi) over its ring (times tr, index mask,
-    // n samples pushed) to the samples within h of t, the time of centre c:
-    // add(i) takes in each sample up to t + h, remove(i) drops each sample
-    // before t - h (never past the centre). The three stages share it.
-    template <class Add, class Remove>
-    static void slide(const int64_t* tr, uint64_t mask, uint64_t n, uint64_t c, int64_t t, int64_t h, uint64_t& hi,
-                      uint64_t& lo, Add&& add, Remove&& remove) {
-        while (hi < n && tr[hi & mask] <= t + h) add(hi++);
-        while (lo < c && tr[lo & mask] < t - h) remove(lo++);
-    }
-
     // ---- stage 1: running sums over the centred window -------------------
     struct ShoeSums {
         double a[3] = {0, 0, 0};
@@ -232,8 +227,8 @@ private:
         const int64_t t = tr[c & mask];
         uint64_t hi = hi1_, lo = lo1_;
         Sums<Shoe> x = sums<Shoe>();
-        slide(tr, mask, n, c, t, h1_, hi, lo, [&](uint64_t i) { x.add(ring[i & mask]); },
-              [&](uint64_t i) { x.remove(ring[i & mask]); });
+        signal::slide_centred_window(tr, mask, n, c, t, h1_, hi, lo, [&](uint64_t i) { x.add(ring[i & mask]); },
+                                     [&](uint64_t i) { x.remove(ring[i & mask]); });
         hi1_ = hi;
         lo1_ = lo;
         c1_ = c + 1;
@@ -248,7 +243,7 @@ private:
         else push3_new(t, statistic, fixed, out);
     }
 
-    // ---- stage 2: running minimum of the statistic (monotone deque) -------
+    // ---- stage 2: running minimum of the statistic ---------------------------
     template <class Out>
     void push2(int64_t t, double statistic, bool fixed, Out& out) {
         if (n2_ - lo2_ >= cap2_) make_room2(out);
@@ -264,29 +259,22 @@ private:
     void emit2(Out& out) {
         const int64_t* tr = td_.get();
         const double* st = st_.get();
-        uint64_t* dq = dq_.get();
-        const uint64_t c = c2_, n = n2_, mask = maskd_, qmask = dq_mask_;
+        const uint64_t c = c2_, n = n2_, mask = maskd_;
         const int64_t t = tr[c & mask];
-        uint64_t hi = hi2_, lo = lo2_, head = dq_head_, tail = dq_tail_;
-        slide(
-            tr, mask, n, c, t, h2_, hi, lo,
-            [&](uint64_t i) {
-                const double x = st[i & mask];
-                while (tail > head && st[dq[(tail - 1) & qmask] & mask] >= x) --tail;
-                dq[tail++ & qmask] = i;
-            },
-            [&](uint64_t i) {
-                if (tail > head && dq[head & qmask] == i) ++head;
-            });
+        uint64_t hi = hi2_, lo = lo2_;
+        signal::RunningMinimum minimum = minimum_;
+        signal::slide_centred_window(
+            tr, mask, n, c, t, h2_, hi, lo, [&](uint64_t i) { minimum.push(i, st, mask); },
+            [&](uint64_t i) { minimum.pop(i); });
         hi2_ = hi;
         lo2_ = lo;
-        dq_head_ = head;
-        dq_tail_ = tail;
+        minimum_.head = minimum.head;
+        minimum_.tail = minimum.tail;
         c2_ = c + 1;
         // (The deque holds exactly the window's strict suffix minima whatever
         // the history: it needs no periodic rebuild.)
         const double s = st[c & mask];
-        const double m = tail > head ? st[dq[head & qmask] & mask] : HUGE_VAL;
+        const double m = minimum.min(st, mask);
         const bool stance = fx_[c & mask] || (s < adaptive_max_ && s <= adaptive_ratio_ * m);
         push3(c, t, stance, out);
     }
@@ -295,7 +283,7 @@ private:
     void make_room2(Out& out) {
         while (n2_ - lo2_ >= cap2_) {
             if (lo2_ < c2_ && lo2_ < hi2_) {
-                if (dq_tail_ > dq_head_ && dq_[dq_head_ & dq_mask_] == lo2_) ++dq_head_;
+                minimum_.pop(lo2_);
                 ++lo2_;
             } else {
                 emit2(out);
@@ -331,17 +319,14 @@ private:
         const uint64_t c = c3_, n = n3_, mask = maskd_;
         const int64_t t = tr[c & mask];
         uint64_t hi = hi3_, lo = lo3_;
-        int64_t ones = ones_;
-        slide(tr, mask, n, c, t, h3_, hi, lo, [&](uint64_t i) { ones += sn[i & mask]; },
-              [&](uint64_t i) { ones -= sn[i & mask]; });
+        signal::MajorityVote vote = vote_;
+        signal::slide_centred_window(tr, mask, n, c, t, h3_, hi, lo, [&](uint64_t i) { vote.add(sn[i & mask]); },
+                                     [&](uint64_t i) { vote.remove(sn[i & mask]); });
         hi3_ = hi;
         lo3_ = lo;
-        ones_ = ones;
+        vote_ = vote;
         c3_ = c + 1;
-        const int64_t count = static_cast<int64_t>(hi - lo);
-        bool s = sn[c & mask];
-        if (2 * ones > count) s = true;
-        else if (2 * ones < count) s = false;
+        const bool s = vote.decide(static_cast<int64_t>(hi - lo), sn[c & mask]);
         out(StanceDecision{t, s, st_[c & mask]});
     }
 
@@ -349,7 +334,7 @@ private:
     void make_room3(Out& out) {
         while (n3_ - lo3_ >= cap3_) {
             if (lo3_ < c3_ && lo3_ < hi3_) {
-                ones_ -= sn_[lo3_ & maskd_];
+                vote_.remove(sn_[lo3_ & maskd_]);
                 ++lo3_;
             } else {
                 emit3(out);
@@ -433,10 +418,10 @@ private:
     std::unique_ptr<bool[]> fx_, sn_;
     uint64_t maskd_ = 0;
     uint64_t cap2_ = 0, n2_ = 0, c2_ = 0, lo2_ = 0, hi2_ = 0;
-    std::unique_ptr<uint64_t[]> dq_;  // sample numbers of the deque, in a ring
-    uint64_t dq_mask_ = 0, dq_head_ = 0, dq_tail_ = 0;
+    std::unique_ptr<uint64_t[]> dq_;    // the running minimum's ring of sample numbers
+    signal::RunningMinimum minimum_;  // over dq_
     uint64_t cap3_ = 0, n3_ = 0, c3_ = 0, lo3_ = 0, hi3_ = 0;
-    int64_t ones_ = 0;
+    signal::MajorityVote vote_;
 };
 
 }  // namespace pednav::zupt_ins
