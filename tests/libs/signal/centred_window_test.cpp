@@ -20,11 +20,11 @@ TEST_CASE("half windows in ns and ring sizes") {
     CHECK(ring_size_for(16) == 16);
     CHECK(ring_size_for(17) == 32);
     CHECK(ring_size_for(1025) == 2048);
-    CHECK(ring_size_for_window(0.0, 1000.0) == 64);      // the margin alone
-    CHECK(ring_size_for_window(0.06, 1000.0) == 128);    // 60 + 64
-    CHECK(ring_size_for_window(0.05, 200.0) == 128);     // 10 + 64
-    CHECK(ring_size_for_window(1.0, 1000.0) == 2048);    // 1000 + 64
-    CHECK(ring_size_for_window(0.064, 1000.0) == 128);   // 64 + 64 fits exactly
+    CHECK(ring_size_for_window(0.0, 1000.0) == 64);     // the margin alone
+    CHECK(ring_size_for_window(0.06, 1000.0) == 128);   // 60 + 64
+    CHECK(ring_size_for_window(0.05, 200.0) == 128);    // 10 + 64
+    CHECK(ring_size_for_window(1.0, 1000.0) == 2048);   // 1000 + 64
+    CHECK(ring_size_for_window(0.064, 1000.0) == 128);  // 64 + 64 fits exactly
 }
 
 namespace {

@@ -40,8 +40,8 @@ TEST_CASE("a centred five-sample majority filter removes isolated flips and keep
     uint64_t n = 0, c = 0, hi = 0, lo = 0;
     const auto finish = [&] {
         slide_centred_window(
-            t_ring.data(), mask, n, c, t_ring[c & mask], h, hi, lo, [&](uint64_t i) { v.add(votes[i & mask]); },
-            [&](uint64_t i) { v.remove(votes[i & mask]); });
+            t_ring.data(), mask, n, c, t_ring[c & mask], h, hi, lo,
+            [&](uint64_t i) { v.add(votes[i & mask]); }, [&](uint64_t i) { v.remove(votes[i & mask]); });
         out.push_back(v.decide(static_cast<int64_t>(hi - lo), votes[c & mask]));
         ++c;
     };

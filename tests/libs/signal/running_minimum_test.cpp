@@ -21,7 +21,8 @@ struct Driven {
     std::vector<double> minima;
     uint64_t longest_deque = 0;
 };
-Driven run(const std::vector<int64_t>& t, const std::vector<double>& v, int64_t h, uint64_t size, bool negate) {
+Driven run(const std::vector<int64_t>& t, const std::vector<double>& v, int64_t h, uint64_t size,
+           bool negate) {
     const uint64_t mask = size - 1;
     std::vector<int64_t> t_ring(size);
     std::vector<double> v_ring(size);
@@ -33,8 +34,8 @@ Driven run(const std::vector<int64_t>& t, const std::vector<double>& v, int64_t 
     uint64_t n = 0, c = 0, hi = 0, lo = 0;
     const auto finish = [&] {
         slide_centred_window(
-            t_ring.data(), mask, n, c, t_ring[c & mask], h, hi, lo, [&](uint64_t i) { m.push(i, v_ring.data(), mask); },
-            [&](uint64_t i) { m.pop(i); });
+            t_ring.data(), mask, n, c, t_ring[c & mask], h, hi, lo,
+            [&](uint64_t i) { m.push(i, v_ring.data(), mask); }, [&](uint64_t i) { m.pop(i); });
         out.longest_deque = std::max(out.longest_deque, m.tail - m.head);
         const double x = m.min(v_ring.data(), mask);
         out.minima.push_back(negate ? -x : x);

@@ -1,9 +1,9 @@
 // WGS-84 local tangent plane: radii of curvature at the origin latitude.
 #include <cmath>
 
-#include "pednav_io/geo.hpp"
+#include "pednav_geodesy/enu.hpp"
 
-namespace pednav::io {
+namespace pednav::geodesy {
 
 namespace {
 
@@ -20,7 +20,7 @@ void radii(double lat_deg, double* meridian_m, double* normal_m) {
 
 }  // namespace
 
-void geodetic_to_enu(const Origin& origin, double lat_deg, double lon_deg, double height_m, double enu_m[3]) {
+void geodetic_to_enu(const GeodeticPoint& origin, double lat_deg, double lon_deg, double height_m, double enu_m[3]) {
     double m = 0.0, n = 0.0;
     radii(origin.lat_deg, &m, &n);
     double dlon = lon_deg - origin.lon_deg;
@@ -31,7 +31,7 @@ void geodetic_to_enu(const Origin& origin, double lat_deg, double lon_deg, doubl
     enu_m[2] = height_m - origin.height_m;
 }
 
-void enu_to_geodetic(const Origin& origin, const double enu_m[3], double* lat_deg, double* lon_deg,
+void enu_to_geodetic(const GeodeticPoint& origin, const double enu_m[3], double* lat_deg, double* lon_deg,
                      double* height_m) {
     double m = 0.0, n = 0.0;
     radii(origin.lat_deg, &m, &n);
@@ -42,4 +42,4 @@ void enu_to_geodetic(const Origin& origin, const double enu_m[3], double* lat_de
     *height_m = origin.height_m + enu_m[2];
 }
 
-}  // namespace pednav::io
+}  // namespace pednav::geodesy
