@@ -3,8 +3,9 @@
 // IMU sample, one stride per stance, attitude/gyro-bias feedback.
 #include <cmath>
 
-#include <pednav_zupt_ins/foot_ins.hpp>
 #include <pednav_sdk/library.hpp>
+#include <pednav_sdk/time_join.hpp>
+#include <pednav_zupt_ins/foot_ins.hpp>
 
 namespace {
 using namespace pednav::sdk;
@@ -15,39 +16,26 @@ using pednav::navmath::Vec3;
 // FootIns or FootInsDense); the two plugins below differ only in their ids.
 template <class Ins>
 class FootInsFilter : public PositionFilter {
+    // The IMU sample, its gait phase and its attitude.
+    using Join = TimeJoin<pn_imu_t, pn_gait_phase_t, pn_attitude_t>;
+
 public:
     static constexpr const char* kVendor = "pednav";
     static constexpr const char* const kFeatures[] = {"mount:foot", "needs:gait_phase", "needs:attitude", nullptr};
-    static constexpr uint64_t kConsumes =
-        PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_GAIT_PHASE) | PN_REC_MASK(PN_REC_ATTITUDE);
+    static constexpr uint64_t kConsumes = Join::kRecordMask;
     static constexpr uint64_t kProduces =
         PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_ATTITUDE_CORRECTION);
 
     FootInsFilter(Params& p, const CreateContext&) : ins_(read(p)) {}
 
-    // A sample is processed once its attitude and its gait phase are both in,
-    // whichever comes first in the batch; without a gait phase for it (no
-    // step detector), when the next sample's IMU record arrives or at flush.
-    void on_imu(const pn_imu_t& imu) override {
-        if (pending_ && att_.header.t_ns < imu.header.t_ns) process(att_);
-        imu_ = imu;
-    }
-    void on_gait_phase(const pn_gait_phase_t& g) override {
-        gait_t_ = g.header.t_ns;
-        stance_ = g.stance != 0;
-        if (pending_ && att_.header.t_ns == gait_t_) process(att_);
-    }
-    void on_attitude(const pn_attitude_t& att) override {
-        if (pending_) process(att_);
-        if (gait_t_ == att.header.t_ns) {
-            process(att);
-        } else {
-            att_ = att;
-            pending_ = true;
-        }
-    }
+    // A sample is processed once its IMU record, gait phase and attitude are
+    // all in, in any order; without a gait phase for it (no step detector),
+    // when the next sample's first record arrives or at flush (TimeJoin).
+    void on_imu(const pn_imu_t& imu) override { join_.add(imu, step()); }
+    void on_gait_phase(const pn_gait_phase_t& g) override { join_.add(g, step()); }
+    void on_attitude(const pn_attitude_t& att) override { join_.add(att, step()); }
     void on_flush() override {
-        if (pending_) process(att_);
+        join_.flush(step());
         pednav::zupt_ins::StrideOut s;
         if (ins_.finish(s)) emit_stride(s);
     }
@@ -57,15 +45,26 @@ public:
     }
 
 private:
-    void process(const pn_attitude_t& att) {
-        pending_ = false;
+    auto step() {
+        return [this](const Join::Sample& s) { process(s); };
+    }
+    // One IMU sample with its attitude; without a gait phase it is not
+    // stance. Without an attitude (the estimator is still aligning) there is
+    // nothing to integrate, nor without an IMU record (an attitude at a time
+    // of its own).
+    void process(const Join::Sample& sample) {
+        const pn_imu_t* imu = sample.get<pn_imu_t>();
+        const pn_attitude_t* attitude = sample.get<pn_attitude_t>();
+        if (!imu || !attitude) return;
+        const pn_attitude_t& att = *attitude;
+        const pn_gait_phase_t* gait = sample.get<pn_gait_phase_t>();
         const int64_t t = att.header.t_ns;
-        const Vec3 a(imu_.accel_mps2[0], imu_.accel_mps2[1], imu_.accel_mps2[2]);
-        const Vec3 w(imu_.gyro_radps[0], imu_.gyro_radps[1], imu_.gyro_radps[2]);
+        const Vec3 a(imu->accel_mps2[0], imu->accel_mps2[1], imu->accel_mps2[2]);
+        const Vec3 w(imu->gyro_radps[0], imu->gyro_radps[1], imu->gyro_radps[2]);
         const Quat q(att.q_enu_from_body[0], att.q_enu_from_body[1], att.q_enu_from_body[2],
                      att.q_enu_from_body[3]);
         const Vec3 bg(att.gyro_bias_radps[0], att.gyro_bias_radps[1], att.gyro_bias_radps[2]);
-        const bool stance = stance_ && gait_t_ == t;
+        const bool stance = gait && gait->stance != 0;
         ins_.step(t, a, w, q, bg, stance, out_);
         if (!std::isfinite(out_.pos.sum()) || !std::isfinite(out_.vel.sum()))
             throw NumericError("foot INS diverged (non-finite position)");
@@ -141,11 +140,7 @@ private:
 
     Ins ins_;
     pednav::zupt_ins::SampleOut out_;
-    pn_imu_t imu_{};
-    pn_attitude_t att_{};
-    bool pending_ = false;
-    int64_t gait_t_ = INT64_MIN;
-    bool stance_ = false;
+    Join join_;
 };
 
 class FootEkf15 : public FootInsFilter<pednav::zupt_ins::FootIns> {
