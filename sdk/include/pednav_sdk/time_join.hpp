@@ -88,25 +88,24 @@ public:
     // The records of one sample time. Valid only during the on_sample call.
     class Sample {
     public:
-        int64_t t_ns() const { return join_.t_ns_; }
+        int64_t t_ns() const { return t_ns_; }
         // The record of type R about this time, or nullptr when none arrived.
         template <class R>
         const R* get() const {
-            constexpr size_t i = index_of<R>();
-            if (i == extra_index_) return static_cast<const R*>(extra_);
-            return (present_ >> i) & 1u ? &std::get<i>(join_.records_) : nullptr;
+            return static_cast<const R*>(records_[index_of<R>()]);
         }
         // Whether a record of every joined type is in.
-        bool complete() const { return (present_ | (extra_ ? 1u << extra_index_ : 0u)) == kAll; }
+        bool complete() const {
+            for (const void* r : records_)
+                if (!r) return false;
+            return true;
+        }
 
     private:
         friend class TimeJoin;
-        Sample(const TimeJoin& join, uint32_t present, const void* extra, size_t extra_index)
-            : join_(join), present_(present), extra_(extra), extra_index_(extra_index) {}
-        const TimeJoin& join_;
-        uint32_t present_;
-        const void* extra_;
-        size_t extra_index_;
+        Sample() = default;
+        int64_t t_ns_ = 0;
+        const void* records_[kTypes];
     };
 
     // Takes in one record of a joined type; calls on_sample when this
@@ -117,15 +116,17 @@ public:
         constexpr size_t i = index_of<R>();
         constexpr uint32_t bit = 1u << i;
         const int64_t t = record.header.t_ns;
-        if (t < t_ns_) {
+        if (t == t_ns_) {
+            if (held_ & bit) release_pending(on_sample);  // a repeat: the held sample is over
+        } else if (t > t_ns_) {
+            if (held_) release_pending(on_sample);
+            t_ns_ = t;
+        } else {
             ++late_records_;
             return;
         }
-        if (held_ && (t != t_ns_ || (held_ & bit))) release(on_sample, nullptr, kTypes);
-        t_ns_ = t;
         if ((held_ | bit) == kAll) {
-            // The last record of the sample: handed over in place, not stored.
-            release(on_sample, &record, i);
+            release_complete<i>(on_sample, record);
             return;
         }
         std::get<i>(records_) = record;
@@ -135,7 +136,7 @@ public:
     // End of stream: releases the pending sample, if any.
     template <class OnSample>
     void flush(OnSample&& on_sample) {
-        if (held_) release(on_sample, nullptr, kTypes);
+        if (held_) release_pending(on_sample);
     }
 
     // Drops the pending sample without releasing it.
@@ -150,13 +151,33 @@ public:
 private:
     static constexpr uint32_t kAll = static_cast<uint32_t>((uint64_t{1} << kTypes) - 1);
 
-    // Hands the held records (plus `extra` as type index extra_index) to
-    // on_sample; the join is empty before the call.
+    // Hands the held records to on_sample; the join is empty before the call.
     template <class OnSample>
-    void release(OnSample& on_sample, const void* extra, size_t extra_index) {
-        const uint32_t present = held_;
+    void release_pending(OnSample& on_sample) {
+        Sample s;
+        s.t_ns_ = t_ns_;
+        fill_held(s, std::index_sequence_for<Records...>{});
         held_ = 0;
-        on_sample(static_cast<const Sample&>(Sample(*this, present, extra, extra_index)));
+        on_sample(static_cast<const Sample&>(s));
+    }
+    template <size_t... I>
+    void fill_held(Sample& s, std::index_sequence<I...>) const {
+        ((s.records_[I] = (held_ >> I) & 1u ? static_cast<const void*>(&std::get<I>(records_)) : nullptr),
+         ...);
+    }
+    // The held records and `last`, the record of type index L that completes
+    // the sample (handed over in place, not stored).
+    template <size_t L, class OnSample, class R>
+    void release_complete(OnSample& on_sample, const R& last) {
+        Sample s;
+        s.t_ns_ = t_ns_;
+        fill_complete<L>(s, &last, std::index_sequence_for<Records...>{});
+        held_ = 0;
+        on_sample(static_cast<const Sample&>(s));
+    }
+    template <size_t L, size_t... I>
+    void fill_complete(Sample& s, const void* last, std::index_sequence<I...>) const {
+        ((s.records_[I] = I == L ? last : static_cast<const void*>(&std::get<I>(records_))), ...);
     }
 
     std::tuple<Records...> records_{};
