@@ -25,3 +25,14 @@ TEST_CASE("atan2_fast agrees with libm's atan2 to about an ulp in every octant")
     CHECK(atan2_fast(1.0, 1.0) == std::atan2(1.0, 1.0));
     CHECK(std::isnan(atan2_fast(NAN, 1.0)));
 }
+
+TEST_CASE("wrap_pi brings any angle into [-pi, pi)") {
+    CHECK(wrap_pi(0.0) == 0.0);
+    CHECK(wrap_pi(M_PI) == -M_PI);  // the upper end maps to the lower
+    CHECK(wrap_pi(-M_PI) == -M_PI);
+    CHECK(wrap_pi(1.5 * M_PI) == doctest::Approx(-0.5 * M_PI).epsilon(1e-15));
+    CHECK(wrap_pi(-1.5 * M_PI) == doctest::Approx(0.5 * M_PI).epsilon(1e-15));
+    CHECK(wrap_pi(7.0) == doctest::Approx(7.0 - 2.0 * M_PI).epsilon(1e-15));
+    CHECK(wrap_pi(-7.0) == doctest::Approx(-7.0 + 2.0 * M_PI).epsilon(1e-15));
+    CHECK(wrap_pi(100.0 * M_PI + 0.25) == doctest::Approx(0.25).epsilon(1e-12));
+}
