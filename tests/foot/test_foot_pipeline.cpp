@@ -13,11 +13,11 @@
 #include <Eigen/Eigenvalues>
 #include <pednav_eval/config_patch.hpp>
 #include <pednav_eval/walks.hpp>
-#include <pednav_foot/so3.hpp>
 #include <pednav_foot_eval/patches.hpp>
 #include <pednav_foot_eval/runs.hpp>
 #include <pednav_foot_eval/scores.hpp>
 #include <pednav_io/sensor_log.hpp>
+#include <pednav_navmath/so3.hpp>
 #include <pednav_sim/simulate.hpp>
 
 using namespace pednav;
@@ -270,8 +270,8 @@ TEST_CASE("issue 3: HUPT cuts the mean height error on level floors by at least 
 // the attitude, trapezoidal velocity and position).
 namespace {
 double step_height_drift(const sim::SimOutput& out, bool mid_interval) {
-    using foot::Quat;
-    using foot::Vec3;
+    using navmath::Quat;
+    using navmath::Vec3;
     double sum = 0;
     int steps = 0;
     const double g = 9.80665;
@@ -289,14 +289,14 @@ double step_height_drift(const sim::SimOutput& out, bool mid_interval) {
             const double dt = out.truth[i].t_s - out.truth[i - 1].t_s;
             if (mid_interval) {
                 const Vec3 w0 = w_of(i - 1), w1 = w_of(i);
-                q = q * foot::quat_exp(0.5 * (w0 + w1) * dt + dt * dt / 12.0 * w0.cross(w1));
+                q = q * navmath::quat_exp(0.5 * (w0 + w1) * dt + dt * dt / 12.0 * w0.cross(w1));
                 const Vec3 fn = q * f_of(i);
                 const Vec3 v1 = v + (0.5 * (fn_prev + fn) - Vec3(0, 0, g)) * dt;
                 p += 0.5 * (v + v1) * dt;
                 v = v1;
                 fn_prev = fn;
             } else {
-                q = q * foot::quat_exp(w_of(i) * dt);  // foot-imu-zupt-zaru-ekf eq. (8)-(11)
+                q = q * navmath::quat_exp(w_of(i) * dt);  // foot-imu-zupt-zaru-ekf eq. (8)-(11)
                 v += (q * f_of(i) - Vec3(0, 0, g)) * dt;
                 p += v * dt;
             }

@@ -6,12 +6,14 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+#include <pednav_geodesy/enu.hpp>
 
 #include "pednav_io/text_fields.hpp"
 #include "pednav_io/writers.hpp"
 #include "test_util.hpp"
 
 using namespace pednav::io;
+using pednav::geodesy::geodetic_to_enu;
 using namespace pednav::io::test;
 
 namespace {
@@ -189,18 +191,6 @@ TEST_CASE("GPX: track points back to ENU, times when the UTC is known") {
     const std::string nowhere = slurp(dir + "/nowhere.gpx");
     CHECK(nowhere.find("start point unknown") != std::string::npos);
     CHECK(nowhere.find("<time>") == std::string::npos);
-}
-
-TEST_CASE("geodetic <-> ENU round trip") {
-    const Origin origin{60.0, 25.0, 30.0, true, 0};
-    const double enu[3] = {1234.5, -987.6, 12.0};
-    double lat = 0, lon = 0, h = 0, back[3];
-    enu_to_geodetic(origin, enu, &lat, &lon, &h);
-    geodetic_to_enu(origin, lat, lon, h, back);
-    for (int i = 0; i < 3; ++i) CHECK(back[i] == doctest::Approx(enu[i]).epsilon(1e-9));
-    // One degree of latitude is about 111.4 km at 60 degrees.
-    geodetic_to_enu(origin, 61.0, 25.0, 30.0, back);
-    CHECK(back[1] == doctest::Approx(111412.0).epsilon(0.002));
 }
 
 TEST_CASE("run summary JSON") {

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include <nlohmann/json.hpp>
-#include <pednav_io/geo.hpp>
+#include <pednav_io/origin.hpp>
 #include <pednav_io/sensor_log.hpp>
 #include <pednav_io/writers.hpp>
 

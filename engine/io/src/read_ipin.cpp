@@ -208,7 +208,7 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
         log.truth_origin = {posi.front().lat, posi.front().lon, 0.0, true};
         for (const auto& p : posi) {
             double enu[3];
-            geodetic_to_enu(log.truth_origin, p.lat, p.lon, 0.0, enu);
+            geodesy::geodetic_to_enu(log.truth_origin, p.lat, p.lon, 0.0, enu);
             TruthPoint point{p.t_s,
                              enu[0],
                              enu[1],

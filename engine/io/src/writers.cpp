@@ -84,7 +84,7 @@ size_t position_at(const std::vector<pn_position_t>& positions, int64_t t_ns) {
 nlohmann::json coordinates(const double enu[3], const Origin& origin) {
     if (!origin.known) return {enu[0], enu[1], enu[2]};
     double lat = 0, lon = 0, h = 0;
-    enu_to_geodetic(origin, enu, &lat, &lon, &h);
+    geodesy::enu_to_geodetic(origin, enu, &lat, &lon, &h);
     return {lon, lat, h};
 }
 
@@ -216,7 +216,7 @@ void write_gpx(const std::string& path, const std::vector<pn_position_t>& positi
     for (size_t i : thinned(positions)) {
         const auto& p = positions[i];
         double lat = 0, lon = 0, h = 0;
-        enu_to_geodetic(place, p.pos_enu_m, &lat, &lon, &h);
+        geodesy::enu_to_geodetic(place, p.pos_enu_m, &lat, &lon, &h);
         std::fprintf(f, "      <trkpt lat=\"%.9f\" lon=\"%.9f\"><ele>%.3f</ele>", lat, lon, h);
         if (origin.known && origin.utc_ns_at_zero != 0) {
             std::fprintf(f, "<time>%s</time>", iso_utc(origin.utc_ns_at_zero + p.header.t_ns).c_str());

@@ -8,7 +8,8 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
-#include <pednav_io/geo.hpp>
+#include <pednav_geodesy/enu.hpp>
+#include <pednav_io/origin.hpp>
 #include <pednav_sim/simulate.hpp>
 
 #include "fields.hpp"
@@ -308,7 +309,7 @@ Truth read_ipin_posi(const std::string& path) {
         // Local tangent plane about the first point.
         if (!origin.known) origin = io::Origin{lat, lon, 0.0, true, 0};
         double enu[3];
-        io::geodetic_to_enu(origin, lat, lon, 0.0, enu);
+        geodesy::geodetic_to_enu(origin, lat, lon, 0.0, enu);
         TruthPoint p;
         p.t_s = time;
         p.x_m = enu[0];

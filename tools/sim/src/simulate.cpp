@@ -6,9 +6,9 @@
 
 #include <Eigen/Dense>
 
-#include <pednav_io/geo.hpp>
+#include <pednav_geodesy/atmosphere.hpp>
+#include <pednav_geodesy/enu.hpp>
 #include <pednav_io/sensor_log.hpp>
-#include <pednav_sim/geo.hpp>
 
 #include "gait_plan.hpp"
 #include "rng.hpp"
@@ -114,7 +114,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
     const double baro_drift = err ? options.baro_drift_pa_per_s * rng_setup.normal() : 0.0;
     const Eigen::Vector3d b_earth = earth_field_enu(options);
     const Eigen::Vector3d g_enu(0.0, 0.0, -options.gravity_mps2);
-    const io::Origin origin{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m, true, 0};
+    const geodesy::GeodeticPoint origin{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m};
 
     const size_t n = static_cast<size_t>(std::floor(plan.end_s * options.rate_hz)) + 1;
     out.imu.reserve(n);
@@ -190,7 +190,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
         }
         if (options.with_baro && k % baro_every == 0) {
             auto b = make_record<pn_baro_t>(PN_REC_BARO, t_ns);
-            b.pressure_pa = standard_pressure_pa(route.origin_height_m + s.p_enu_m.z()) + baro_drift * t;
+            b.pressure_pa = geodesy::standard_pressure_pa(route.origin_height_m + s.p_enu_m.z()) + baro_drift * t;
             if (err) b.pressure_pa += options.baro_noise_pa * rng_baro.normal();
             b.temperature_c = 20.0;
             out.baro.push_back(b);
@@ -215,7 +215,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
                     p += gm +
                          options.gnss_white_h_m * Eigen::Vector3d(rng_gnss.normal(), rng_gnss.normal(), 0.0);
                 const double pe[3] = {p.x(), p.y(), p.z()};
-                io::enu_to_geodetic(origin, pe, &g.lat_deg, &g.lon_deg, &g.height_m);
+                geodesy::enu_to_geodetic(origin, pe, &g.lat_deg, &g.lon_deg, &g.height_m);
                 g.h_accuracy_m = err ? std::sqrt(2.0 * (options.gnss_sigma_h_m * options.gnss_sigma_h_m +
                                                         options.gnss_white_h_m * options.gnss_white_h_m))
                                      : 0.01;

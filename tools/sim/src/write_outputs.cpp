@@ -6,8 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include <pednav_io/geo.hpp>
-#include <pednav_sim/geo.hpp>
+#include <pednav_geodesy/enu.hpp>
 #include <pednav_sim/simulate.hpp>
 
 namespace pednav::sim {
@@ -26,10 +25,10 @@ void make_dirs(const std::string& dir) {
     if (ec) throw std::runtime_error("sim: cannot create " + dir + ": " + ec.message());
 }
 
-nlohmann::json lonlat(const io::Origin& o, double x, double y, double z) {
+nlohmann::json lonlat(const geodesy::GeodeticPoint& o, double x, double y, double z) {
     const double enu[3] = {x, y, z};
     double lat = 0.0, lon = 0.0, h = 0.0;
-    io::enu_to_geodetic(o, enu, &lat, &lon, &h);
+    geodesy::enu_to_geodetic(o, enu, &lat, &lon, &h);
     return {lon, lat};
 }
 
@@ -102,7 +101,7 @@ void write_outputs(const SimOutput& out, const Route& route, const std::string& 
     std::fclose(f);
 
     // Building map: walls and the route as GeoJSON LineStrings (WGS-84 lon, lat).
-    const io::Origin o{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m, true, 0};
+    const geodesy::GeodeticPoint o{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m};
     nlohmann::json fc = {{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
     for (const Wall& w : route.walls) {
         nlohmann::json coords = nlohmann::json::array();

@@ -12,7 +12,7 @@
 #include <pednav/pn_types.h>
 #include <nlohmann/json_fwd.hpp>
 
-#include "pednav_io/geo.hpp"
+#include "pednav_io/origin.hpp"
 
 namespace pednav::io {
 

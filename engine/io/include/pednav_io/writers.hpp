@@ -8,7 +8,7 @@
 #include <pednav/pn_types.h>
 #include <nlohmann/json.hpp>
 
-#include "pednav_io/geo.hpp"
+#include "pednav_io/origin.hpp"
 #include "pednav_io/sensor_log.hpp"
 
 namespace pednav::io {
