@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "params_schema.hpp"
 #include "record_checks.hpp"
 
 namespace pednav::engine {
@@ -116,6 +117,7 @@ Engine::Engine(const pn_engine_create_info_t& info) : loader_(std::make_unique<L
         ci.instance_name = stage->instance_name.c_str();
         ci.mount = config_.mount.c_str();
         ci.imu_rate_hz = config_.imu_rate_hz;
+        check_params_against_schema(*d, sc);
         const pn_status_t st = d->create(d, &stage->host, &ci, &stage->self, &err);
         if (PN_FAILED(st) || !stage->self) {
             const std::string inner = err.where;
