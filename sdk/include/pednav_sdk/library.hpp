@@ -45,7 +45,7 @@ inline pn_status_t status_from_exception(pn_error_t* err, const char* where) noe
         fill_error(err, PN_E_INVALID_CONFIG, e.where(), e.what());
         return PN_E_INVALID_CONFIG;
     } catch (const SchemaError& e) {
-        fill_error(err, PN_E_INTERNAL, where, std::string(where) + ": " + e.what());
+        fill_error(err, PN_E_INTERNAL, where, e.what());
         return PN_E_INTERNAL;
     } catch (const NumericError& e) {
         fill_error(err, PN_E_NUMERIC, where, e.what());

@@ -83,6 +83,7 @@ public:
 
     long integer(const std::string& key, long fallback, long min = -2147483647L,
                  long max = 2147483647L) {
+        undeclared(key, "integer");
         const nlohmann::json* v = find(key);
         if (!v) return fallback;
         if (!v->is_number_integer()) fail(key, "must be an integer");
