@@ -114,18 +114,25 @@ TEST_CASE("a preset that disagrees with a schema is named: value, unknown key, m
     const json plugins = described_plugins(text, error);
     REQUIRE(error.empty());
     json preset = json::parse(text);
+    REQUIRE(preset_disagreements("foot.json", preset, plugins).empty());
+    // The preset's values are the defaults; the expected messages are made from them.
+    using pednav::sdk::format_number;
     json& ekf = preset["pipelines"]["foot"]["position_filter"]["params"];
-    ekf["swing_propagation_s"] = 0.2;
+    const double swing_default_s = ekf.at("swing_propagation_s").get<double>();
+    ekf["swing_propagation_s"] = swing_default_s + 0.25;
     ekf["swing_propagation"] = 0.1;
-    preset["pipelines"]["foot"]["step_detector"]["params"].erase("window_s");
+    json& detector = preset["pipelines"]["foot"]["step_detector"]["params"];
+    const double window_default_s = detector.at("window_s").get<double>();
+    detector.erase("window_s");
     const auto found = preset_disagreements("foot.json", preset, plugins);
     REQUIRE(found.size() == 3);
     CHECK(found[0] == "foot.json: /pipelines/foot/position_filter/params/swing_propagation: not a parameter of "
                       "org.pednav.foot.ekf15");
-    CHECK(found[1] == "foot.json: /pipelines/foot/position_filter/params/swing_propagation_s is 0.2, "
-                      "org.pednav.foot.ekf15's schema default is 0.1");
+    CHECK(found[1] == "foot.json: /pipelines/foot/position_filter/params/swing_propagation_s is " +
+                          format_number(swing_default_s + 0.25) + ", org.pednav.foot.ekf15's schema default is " +
+                          format_number(swing_default_s));
     CHECK(found[2] == "foot.json: /pipelines/foot/step_detector/params/window_s: missing (a preset lists every "
-                      "parameter; org.pednav.foot.stance.shoe's default is 0.06)");
+                      "parameter; org.pednav.foot.stance.shoe's default is " + format_number(window_default_s) + ")");
 }
 
 TEST_CASE("every first-party plugin declares a params schema in the subset") {
