@@ -15,9 +15,12 @@ namespace {
 std::string pointer_token(const std::string& key) {
     std::string t;
     for (char c : key) {
-        if (c == '~') t += "~0";
-        else if (c == '/') t += "~1";
-        else t += c;
+        if (c == '~')
+            t += "~0";
+        else if (c == '/')
+            t += "~1";
+        else
+            t += c;
     }
     return t;
 }
@@ -74,7 +77,8 @@ void check_params_against_schema(const pnp_descriptor_t& plugin, const StageConf
                                 id + ": unknown parameter \"" + it.key() + "\"" + hint_for(it.key(), schema)};
         if (it->is_null()) continue;
         const std::string problem = sdk::param_problem(*spec, *it);
-        if (!problem.empty()) throw ConfigProblem{PN_E_INVALID_CONFIG, base + pointer_token(it.key()), id + ": " + problem};
+        if (!problem.empty())
+            throw ConfigProblem{PN_E_INVALID_CONFIG, base + pointer_token(it.key()), id + ": " + problem};
     }
 }
 

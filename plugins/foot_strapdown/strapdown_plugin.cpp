@@ -112,7 +112,7 @@ private:
         c.gyro_range_radps = p.number("gyro_range_radps");
         if (c.mag_min_ut > c.mag_max_ut)
             Params::fail("mag_min_ut", "is " + format_number(c.mag_min_ut) + " uT, above mag_max_ut (" +
-                                           format_number(c.mag_max_ut) + " uT): no field strength would be trusted");
+                                           format_number(c.mag_max_ut) + " uT): no field would be trusted");
         return c;
     }
 

@@ -53,7 +53,8 @@ bool same_value(const json& a, const json& b) {
 }
 
 // Every way the preset `name` disagrees with the schemas, one sentence each.
-std::vector<std::string> preset_disagreements(const std::string& name, const json& preset, const json& plugins) {
+std::vector<std::string> preset_disagreements(const std::string& name, const json& preset,
+                                              const json& plugins) {
     std::vector<std::string> out;
     for (const auto& [mount, pipeline] : preset.at("pipelines").items()) {
         for (const auto& [role, stage] : pipeline.items()) {
@@ -63,7 +64,8 @@ std::vector<std::string> preset_disagreements(const std::string& name, const jso
             for (const auto& p : plugins)
                 if (p.at("id") == id) schema_json = &p.at("params_schema");
             if (!schema_json || schema_json->is_null()) {
-                out.push_back(at + ": plugin " + id + (schema_json ? " has no params schema" : " was not loaded"));
+                out.push_back(at + ": plugin " + id +
+                              (schema_json ? " has no params schema" : " was not loaded"));
                 continue;
             }
             const auto schema = pednav::sdk::ParamsSchema::from_json(*schema_json);
@@ -98,11 +100,14 @@ TEST_CASE("every preset lists every parameter of its plugins at the schema defau
         const json plugins = described_plugins(text, error);
         INFO(error);
         REQUIRE(error.empty());
-        const auto found = preset_disagreements(std::filesystem::path(path).filename().string(), json::parse(text), plugins);
+        const auto found =
+            preset_disagreements(std::filesystem::path(path).filename().string(), json::parse(text), plugins);
         for (const auto& d : found) MESSAGE(d);
         if (!found.empty())
-            MESSAGE("set the preset's values to the schema defaults, or change the default in the plugin's schema "
-                    "(docs/parameters.md)");
+            MESSAGE(
+                "set the preset's values to the schema defaults, or change the default in the plugin's "
+                "schema "
+                "(docs/parameters.md)");
         CHECK(found.empty());
     }
 }
@@ -126,13 +131,16 @@ TEST_CASE("a preset that disagrees with a schema is named: value, unknown key, m
     detector.erase("window_s");
     const auto found = preset_disagreements("foot.json", preset, plugins);
     REQUIRE(found.size() == 3);
-    CHECK(found[0] == "foot.json: /pipelines/foot/position_filter/params/swing_propagation: not a parameter of "
-                      "org.pednav.foot.ekf15");
+    CHECK(found[0] ==
+          "foot.json: /pipelines/foot/position_filter/params/swing_propagation: not a parameter of "
+          "org.pednav.foot.ekf15");
     CHECK(found[1] == "foot.json: /pipelines/foot/position_filter/params/swing_propagation_s is " +
-                          format_number(swing_default_s + 0.25) + ", org.pednav.foot.ekf15's schema default is " +
-                          format_number(swing_default_s));
-    CHECK(found[2] == "foot.json: /pipelines/foot/step_detector/params/window_s: missing (a preset lists every "
-                      "parameter; org.pednav.foot.stance.shoe's default is " + format_number(window_default_s) + ")");
+                          format_number(swing_default_s + 0.25) +
+                          ", org.pednav.foot.ekf15's schema default is " + format_number(swing_default_s));
+    CHECK(found[2] ==
+          "foot.json: /pipelines/foot/step_detector/params/window_s: missing (a preset lists every "
+          "parameter; org.pednav.foot.stance.shoe's default is " +
+              format_number(window_default_s) + ")");
 }
 
 TEST_CASE("every first-party plugin declares a params schema in the subset") {

@@ -32,7 +32,8 @@ Refusal refused(const std::string& plugin, const nlohmann::json& params) {
 // The gait phases and steps of 8 samples through a created engine.
 std::vector<pn_output_t> gait_phases(const Engine& e) {
     REQUIRE(e.get() != nullptr);
-    REQUIRE(pn_engine_set_output_mask(e.get(), PN_REC_MASK(PN_REC_GAIT_PHASE) | PN_REC_MASK(PN_REC_STEP)) == PN_OK);
+    REQUIRE(pn_engine_set_output_mask(e.get(), PN_REC_MASK(PN_REC_GAIT_PHASE) | PN_REC_MASK(PN_REC_STEP)) ==
+            PN_OK);
     REQUIRE(push(e, walk(0, 8)) == PN_OK);
     pn_error_t err = make_error();
     REQUIRE(pn_engine_flush(e.get(), &err) == PN_OK);
@@ -50,7 +51,8 @@ TEST_CASE("absent params take the schema's defaults, given ones reach the plugin
     CHECK(of_type(d, PN_REC_GAIT_PHASE)[0].gait_phase.stance == 1);       // stance's default
     CHECK(of_type(d, PN_REC_STEP).size() == 2);                           // every_n 4
 
-    const Engine given = schema_engine(kSteps, {{"gain", 1.25}, {"every_n", 3}, {"stance", false}, {"sign", "negative"}});
+    const Engine given =
+        schema_engine(kSteps, {{"gain", 1.25}, {"every_n", 3}, {"stance", false}, {"sign", "negative"}});
     const auto g = gait_phases(given);
     REQUIRE(of_type(g, PN_REC_GAIT_PHASE).size() == 8);
     CHECK(of_type(g, PN_REC_GAIT_PHASE)[0].gait_phase.statistic == -1.25);
@@ -107,13 +109,15 @@ TEST_CASE("a schema that is not JSON or outside the subset is refused at create,
     Refusal r = refused("org.pednav.test.schema_not_json", nlohmann::json::object());
     CHECK(r.status == PN_E_INTERNAL);
     CHECK(r.where == "/pipelines/foot/step_detector/plugin");
-    CHECK(contains(r.message, "plugin org.pednav.test.schema_not_json cannot be configured: its params schema is not "
-                              "valid JSON"));
+    CHECK(contains(r.message,
+                   "plugin org.pednav.test.schema_not_json cannot be configured: its params schema is not "
+                   "valid JSON"));
     r = refused("org.pednav.test.schema_outside_subset", nlohmann::json::object());
     CHECK(r.status == PN_E_INTERNAL);
     CHECK(r.where == "/pipelines/foot/step_detector/plugin");
     CHECK(contains(r.message, "org.pednav.test.schema_outside_subset"));
-    CHECK(contains(r.message, "property \"gain\" uses keyword \"exclusiveMinimum\", outside the supported subset"));
+    CHECK(contains(r.message,
+                   "property \"gain\" uses keyword \"exclusiveMinimum\", outside the supported subset"));
     // The other plugins of the same library are unaffected.
     CHECK(schema_engine(kSteps).status() == PN_OK);
 }
@@ -124,7 +128,8 @@ TEST_CASE("plugin code that disagrees with its schema fails at create with PN_E_
     CHECK(contains(r.message, "parameter \"offset\" is read but not declared in the params schema"));
     r = refused("org.pednav.test.schema_unread", nlohmann::json::object());
     CHECK(r.status == PN_E_INTERNAL);
-    CHECK(contains(r.message, "parameter \"gain\" is declared in the params schema but the plugin never reads it"));
+    CHECK(contains(r.message,
+                   "parameter \"gain\" is declared in the params schema but the plugin never reads it"));
 }
 
 TEST_CASE("describe carries each plugin's schema as JSON") {

@@ -8,9 +8,9 @@
 #include <pednav_sdk/params.hpp>
 
 using pednav::sdk::ConfigError;
+using pednav::sdk::Params;
 using pednav::sdk::ParamsSchema;
 using pednav::sdk::ParamType;
-using pednav::sdk::Params;
 using pednav::sdk::SchemaError;
 
 namespace {
@@ -46,7 +46,9 @@ std::string with_property(const std::string& property) {
     return R"({"type": "object", "additionalProperties": false, "properties": {"k": )" + property + "}}";
 }
 
-bool has(const std::string& haystack, const std::string& needle) { return haystack.find(needle) != std::string::npos; }
+bool has(const std::string& haystack, const std::string& needle) {
+    return haystack.find(needle) != std::string::npos;
+}
 
 }  // namespace
 
@@ -78,34 +80,48 @@ TEST_CASE("a schema in the subset parses into sorted parameters with type, unit,
 TEST_CASE("schemas outside the subset are refused, naming what is wrong") {
     CHECK(has(schema_error("{\"type\": "), "params schema is not valid JSON"));
     CHECK(has(schema_error("[]"), "must be a JSON object"));
-    CHECK(has(schema_error(R"({"additionalProperties": false, "properties": {}})"), "needs \"type\": \"object\""));
-    CHECK(has(schema_error(R"({"type": "object", "properties": {}})"), "needs \"additionalProperties\": false"));
+    CHECK(has(schema_error(R"({"additionalProperties": false, "properties": {}})"),
+              "needs \"type\": \"object\""));
+    CHECK(has(schema_error(R"({"type": "object", "properties": {}})"),
+              "needs \"additionalProperties\": false"));
     CHECK(has(schema_error(R"({"type": "object", "additionalProperties": true, "properties": {}})"),
               "needs \"additionalProperties\": false"));
-    CHECK(has(schema_error(R"({"type": "object", "additionalProperties": false})"), "needs a \"properties\" object"));
-    CHECK(has(schema_error(R"({"type": "object", "additionalProperties": false, "properties": {}, "required": []})"),
+    CHECK(has(schema_error(R"({"type": "object", "additionalProperties": false})"),
+              "needs a \"properties\" object"));
+    CHECK(has(schema_error(
+                  R"({"type": "object", "additionalProperties": false, "properties": {}, "required": []})"),
               "uses keyword \"required\", outside the supported subset"));
-    CHECK(has(schema_error(with_property(R"({"type": "number", "default": 1, "description": "d", "exclusiveMinimum": 0})")),
+    CHECK(has(schema_error(with_property(
+                  R"({"type": "number", "default": 1, "description": "d", "exclusiveMinimum": 0})")),
               "property \"k\" uses keyword \"exclusiveMinimum\""));
     CHECK(has(schema_error(with_property(R"({"type": "array", "default": [], "description": "d"})")),
               "property \"k\" needs \"type\": number, integer, boolean or string"));
-    CHECK(has(schema_error(with_property(R"({"type": "number", "description": "d"})")), "property \"k\" needs a \"default\""));
-    CHECK(has(schema_error(with_property(R"({"type": "number", "default": 1})")), "property \"k\" needs a \"description\""));
+    CHECK(has(schema_error(with_property(R"({"type": "number", "description": "d"})")),
+              "property \"k\" needs a \"default\""));
+    CHECK(has(schema_error(with_property(R"({"type": "number", "default": 1})")),
+              "property \"k\" needs a \"description\""));
     CHECK(has(schema_error(with_property(R"({"type": "number", "default": 1, "description": ""})")),
               "needs a \"description\""));
-    CHECK(has(schema_error(with_property(R"({"type": "number", "minimum": 2, "maximum": 1, "default": 1, "description": "d"})")),
+    CHECK(has(schema_error(with_property(
+                  R"({"type": "number", "minimum": 2, "maximum": 1, "default": 1, "description": "d"})")),
               "\"minimum\" above \"maximum\""));
-    CHECK(has(schema_error(with_property(R"({"type": "number", "maximum": 1, "default": 3, "description": "d"})")),
-              "has a default the schema itself refuses: k is 3, above the maximum 1"));
-    CHECK(has(schema_error(with_property(R"({"type": "boolean", "minimum": 0, "default": true, "description": "d"})")),
+    CHECK(has(
+        schema_error(with_property(R"({"type": "number", "maximum": 1, "default": 3, "description": "d"})")),
+        "has a default the schema itself refuses: k is 3, above the maximum 1"));
+    CHECK(has(schema_error(
+                  with_property(R"({"type": "boolean", "minimum": 0, "default": true, "description": "d"})")),
               "has \"minimum\", which only a number or an integer takes"));
-    CHECK(has(schema_error(with_property(R"({"type": "string", "x-unit": "s", "default": "", "description": "d"})")),
+    CHECK(has(schema_error(
+                  with_property(R"({"type": "string", "x-unit": "s", "default": "", "description": "d"})")),
               "has \"x-unit\", which only a number or an integer takes"));
-    CHECK(has(schema_error(with_property(R"({"type": "number", "enum": [1], "default": 1, "description": "d"})")),
-              "has \"enum\", which only a string takes"));
-    CHECK(has(schema_error(with_property(R"({"type": "string", "enum": [], "default": "", "description": "d"})")),
-              "\"enum\" must be a non-empty array of strings"));
-    CHECK(has(schema_error(with_property(R"({"type": "string", "enum": ["a"], "default": "b", "description": "d"})")),
+    CHECK(has(
+        schema_error(with_property(R"({"type": "number", "enum": [1], "default": 1, "description": "d"})")),
+        "has \"enum\", which only a string takes"));
+    CHECK(has(
+        schema_error(with_property(R"({"type": "string", "enum": [], "default": "", "description": "d"})")),
+        "\"enum\" must be a non-empty array of strings"));
+    CHECK(has(schema_error(
+                  with_property(R"({"type": "string", "enum": ["a"], "default": "b", "description": "d"})")),
               "k is \"b\", not one of a"));
     CHECK(schema_error(kSchema).empty());
 }
@@ -171,11 +187,12 @@ TEST_CASE("Params with a schema: the default when absent, the value when given, 
 
 TEST_CASE("Params with a schema: code that disagrees with the schema is a SchemaError naming the key") {
     Params p("{}", &schema());
-    CHECK_THROWS_WITH_AS(p.number("offset"), "parameter \"offset\" is read but not declared in the params schema",
-                         SchemaError);
-    CHECK_THROWS_WITH_AS(p.boolean("window_s"), "parameter \"window_s\" is read as a boolean but declared a number",
-                         SchemaError);
-    CHECK_THROWS_AS(p.number("window_s", 0.06, 0.0, 2.0), SchemaError);  // the default and range written twice
+    CHECK_THROWS_WITH_AS(p.number("offset"),
+                         "parameter \"offset\" is read but not declared in the params schema", SchemaError);
+    CHECK_THROWS_WITH_AS(p.boolean("window_s"),
+                         "parameter \"window_s\" is read as a boolean but declared a number", SchemaError);
+    CHECK_THROWS_AS(p.number("window_s", 0.06, 0.0, 2.0),
+                    SchemaError);  // the default and range written twice
     CHECK_THROWS_AS(p.integer("count", 3), SchemaError);
     CHECK_THROWS_AS(p.numbers("window_s", {}), SchemaError);  // arrays are outside the subset
     p.number("window_s");

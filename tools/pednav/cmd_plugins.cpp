@@ -16,7 +16,8 @@ constexpr const char* kUsage =
     "  the plugins found (next to the executable and in each --plugin-dir) and the files rejected;\n"
     "  --params: every plugin's parameters (key, type, unit, range, default, meaning), --markdown as the\n"
     "  README's tables; --check FILE...: the tables between <!-- params:begin --> and <!-- params:end -->\n"
-    "  in each FILE agree with the schemas (exit 1 naming each difference); --update FILE...: regenerate them\n";
+    "  in each FILE agree with the schemas (exit 1 naming each difference); --update FILE...: rewrite\n"
+    "  them\n";
 
 }  // namespace
 

@@ -45,7 +45,8 @@ struct Block {
 ParamsTableOptions parse_options(const std::string& name, size_t line_no, const std::string& marker) {
     const size_t close = marker.rfind("-->");
     if (close == std::string::npos || close < std::strlen(kBegin))
-        throw std::runtime_error(name + ":" + std::to_string(line_no) + ": the params:begin marker is not closed with -->");
+        throw std::runtime_error(name + ":" + std::to_string(line_no) +
+                                 ": the params:begin marker is not closed with -->");
     ParamsTableOptions o;
     const std::string attrs = marker.substr(std::strlen(kBegin), close - std::strlen(kBegin));
     size_t pos = 0;
@@ -60,8 +61,9 @@ ParamsTableOptions parse_options(const std::string& name, size_t line_no, const 
         } else if (token.rfind("level=", 0) == 0 && token.size() == 7 && token[6] >= '1' && token[6] <= '6') {
             o.heading_level = token[6] - '0';
         } else {
-            throw std::runtime_error(name + ":" + std::to_string(line_no) + ": unknown params:begin attribute \"" +
-                                     token + "\" (id=PREFIX, level=1..6)");
+            throw std::runtime_error(name + ":" + std::to_string(line_no) +
+                                     ": unknown params:begin attribute \"" + token +
+                                     "\" (id=PREFIX, level=1..6)");
         }
     }
     return o;
@@ -71,7 +73,9 @@ std::vector<Block> find_blocks(const std::string& name, const std::vector<std::s
     std::vector<Block> blocks;
     for (size_t i = 0; i < lines.size(); ++i) {
         const std::string l = trim(lines[i]);
-        if (l == kEnd) throw std::runtime_error(name + ":" + std::to_string(i + 1) + ": " + kEnd + " without a params:begin");
+        if (l == kEnd)
+            throw std::runtime_error(name + ":" + std::to_string(i + 1) + ": " + kEnd +
+                                     " without a params:begin");
         if (l.rfind(kBegin, 0) != 0) continue;
         Block b{i, i, parse_options(name, i + 1, l)};
         for (b.end = i + 1; b.end < lines.size() && trim(lines[b.end]) != kEnd; ++b.end) {
@@ -145,10 +149,12 @@ std::vector<Table> parse_tables(const std::vector<std::string>& lines, size_t fi
     return tables;
 }
 
-std::string at(const std::string& name, size_t line_no) { return name + ":" + std::to_string(line_no) + ": "; }
+std::string at(const std::string& name, size_t line_no) {
+    return name + ":" + std::to_string(line_no) + ": ";
+}
 
-void compare_block(const std::string& name, const std::vector<std::string>& written_lines, size_t first_line_no,
-                   const std::string& generated, std::vector<std::string>& out) {
+void compare_block(const std::string& name, const std::vector<std::string>& written_lines,
+                   size_t first_line_no, const std::string& generated, std::vector<std::string>& out) {
     const auto expected_lines = split_lines(generated);
     const auto expected = parse_tables(expected_lines, 1);
     const auto written = parse_tables(written_lines, first_line_no);
@@ -174,22 +180,26 @@ void compare_block(const std::string& name, const std::vector<std::string>& writ
             for (size_t c = 0; c < row.cells.size(); ++c) {
                 const std::string have = c < it->second.cells.size() ? it->second.cells[c] : "";
                 if (have != row.cells[c])
-                    out.push_back(at(name, it->second.line) + e.title + ", " + key + ": " + kParamsColumns[c] + " is \"" +
-                                  have + "\" in the file, \"" + row.cells[c] + "\" in the schema");
+                    out.push_back(at(name, it->second.line) + e.title + ", " + key + ": " +
+                                  kParamsColumns[c] + " is \"" + have + "\" in the file, \"" + row.cells[c] +
+                                  "\" in the schema");
             }
         }
         for (const auto& [key, row] : w->rows)
-            if (!e.rows.count(key)) out.push_back(at(name, row.line) + e.title + ", " + key + ": in the file, not in the schema");
+            if (!e.rows.count(key))
+                out.push_back(at(name, row.line) + e.title + ", " + key + ": in the file, not in the schema");
     }
     for (const auto& w : written)
-        if (!find(expected, w.title)) out.push_back(at(name, w.line) + w.title + ": in the file, not among the plugins found");
+        if (!find(expected, w.title))
+            out.push_back(at(name, w.line) + w.title + ": in the file, not among the plugins found");
     if (out.size() != before) return;
     // Same tables, other text (a heading level, spacing, a paragraph).
     for (size_t i = 0; i < std::max(expected_lines.size(), written_lines.size()); ++i) {
         const std::string e = i < expected_lines.size() ? expected_lines[i] : "(end of block)";
         const std::string w = i < written_lines.size() ? written_lines[i] : "(end of block)";
         if (e != w) {
-            out.push_back(at(name, first_line_no + i) + "\"" + w + "\" where the generated text has \"" + e + "\"");
+            out.push_back(at(name, first_line_no + i) + "\"" + w + "\" where the generated text has \"" + e +
+                          "\"");
             return;
         }
     }
@@ -215,7 +225,8 @@ std::vector<std::string> params_docs_differences(const std::string& name, const 
     return out;
 }
 
-std::string params_docs_updated(const std::string& name, const std::string& text, const nlohmann::json& plugins) {
+std::string params_docs_updated(const std::string& name, const std::string& text,
+                                const nlohmann::json& plugins) {
     const auto lines = split_lines(text);
     std::string out;
     size_t next = 0;
@@ -233,7 +244,8 @@ int params_command(const nlohmann::json& plugins, const ParamsRequest& request) 
     if ((request.check || request.update) && request.files.empty())
         throw UsageError(std::string(request.check ? "--check" : "--update") + " needs the Markdown files");
     if (!request.check && !request.update) {
-        if (!request.files.empty()) throw UsageError("unexpected argument " + request.files[0] + " (--check or --update FILE...)");
+        if (!request.files.empty())
+            throw UsageError("unexpected argument " + request.files[0] + " (--check or --update FILE...)");
         std::fputs((request.markdown ? params_markdown(plugins) : params_text(plugins)).c_str(), stdout);
         return 0;
     }
@@ -242,7 +254,8 @@ int params_command(const nlohmann::json& plugins, const ParamsRequest& request) 
             const std::string text = read_text_file(path);
             const std::string updated = params_docs_updated(path, text, plugins);
             if (updated != text) write_text_file(path, updated);
-            std::printf("%s: %s\n", path.c_str(), updated != text ? "parameter tables regenerated" : "up to date");
+            std::printf("%s: %s\n", path.c_str(),
+                        updated != text ? "parameter tables regenerated" : "up to date");
         }
         return 0;
     }
@@ -250,7 +263,8 @@ int params_command(const nlohmann::json& plugins, const ParamsRequest& request) 
     for (const auto& path : request.files) {
         const auto found = params_docs_differences(path, read_text_file(path), plugins);
         for (const auto& d : found) std::fprintf(stderr, "%s\n", d.c_str());
-        if (found.empty()) std::printf("%s: the parameter tables agree with the plugins' schemas\n", path.c_str());
+        if (found.empty())
+            std::printf("%s: the parameter tables agree with the plugins' schemas\n", path.c_str());
         differences += found.size();
     }
     if (differences == 0) return 0;
@@ -258,8 +272,10 @@ int params_command(const nlohmann::json& plugins, const ParamsRequest& request) 
     for (const auto& d : request.plugin_dirs) command += " --plugin-dir " + d;
     command += " --update";
     for (const auto& path : request.files) command += " " + path;
-    std::fprintf(stderr, "%zu difference%s between the parameter tables and the schemas; regenerate the tables with:\n  %s\n",
-                 differences, differences == 1 ? "" : "s", command.c_str());
+    std::fprintf(
+        stderr,
+        "%zu difference%s between the parameter tables and the schemas; regenerate the tables with:\n  %s\n",
+        differences, differences == 1 ? "" : "s", command.c_str());
     return 1;
 }
 

@@ -19,10 +19,10 @@ namespace pednav::cli {
 
 // What `pednav plugins --params` was asked for.
 struct ParamsRequest {
-    bool params = false;                   // --params
+    bool params = false;  // --params
     bool markdown = false;
-    bool check = false;                    // --check FILE...
-    bool update = false;                   // --update FILE...
+    bool check = false;   // --check FILE...
+    bool update = false;  // --update FILE...
     std::vector<std::string> files;
     std::vector<std::string> plugin_dirs;  // given with --plugin-dir, for the regenerate command
     // Any of these options makes `pednav plugins` a parameter listing.
@@ -42,6 +42,7 @@ int params_command(const nlohmann::json& plugins, const ParamsRequest& request);
 std::vector<std::string> params_docs_differences(const std::string& name, const std::string& text,
                                                  const nlohmann::json& plugins);
 // The text with every block regenerated. Throws like params_docs_differences.
-std::string params_docs_updated(const std::string& name, const std::string& text, const nlohmann::json& plugins);
+std::string params_docs_updated(const std::string& name, const std::string& text,
+                                const nlohmann::json& plugins);
 
 }  // namespace pednav::cli

@@ -38,7 +38,8 @@ void fill(ParamsTable& t, const nlohmann::json& schema) {
         for (const auto& p : parsed.params()) {
             const std::string range = sdk::range_text(p);
             t.rows.push_back({p.key, sdk::param_type_name(p.type), p.unit.empty() ? "-" : p.unit,
-                              range.empty() ? "-" : range, sdk::format_value(p.default_value), p.description});
+                              range.empty() ? "-" : range, sdk::format_value(p.default_value),
+                              p.description});
         }
         if (t.rows.empty()) t.problem = "no parameters";
     } catch (const sdk::SchemaError& e) {
@@ -110,7 +111,8 @@ std::string params_text(const nlohmann::json& plugins, const ParamsTableOptions&
         auto line = [&](const std::vector<std::string>& cells) {
             std::string l = " ";
             for (size_t c = 0; c < cells.size(); ++c)
-                l += " " + (c + 1 < cells.size() ? cells[c] + std::string(width[c] - cells[c].size() + 1, ' ') : cells[c]);
+                l += " " + (c + 1 < cells.size() ? cells[c] + std::string(width[c] - cells[c].size() + 1, ' ')
+                                                 : cells[c]);
             return l + "\n";
         };
         out += line(kParamsColumns);

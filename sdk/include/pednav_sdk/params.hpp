@@ -127,7 +127,8 @@ public:
     std::vector<double> numbers(const std::string& key, const std::vector<double>& fallback,
                                 size_t size = 0) {
         if (schema_)
-            throw SchemaError("parameter \"" + key + "\" is read as an array, which the params schema subset has not");
+            throw SchemaError("parameter \"" + key +
+                              "\" is read as an array, which the params schema subset has not");
         const nlohmann::json* v = find(key);
         if (!v) return fallback;
         if (!v->is_array()) fail(key, "must be an array of numbers");
@@ -173,9 +174,11 @@ private:
     // key the schema lacks or of another type, ConfigError for a bad value.
     const nlohmann::json& declared(const std::string& key, ParamType type) {
         if (!schema_)
-            throw SchemaError("parameter \"" + key + "\" is read without a default, but the plugin has no params schema");
+            throw SchemaError("parameter \"" + key +
+                              "\" is read without a default, but the plugin has no params schema");
         const ParamSpec* spec = schema_->find(key);
-        if (!spec) throw SchemaError("parameter \"" + key + "\" is read but not declared in the params schema");
+        if (!spec)
+            throw SchemaError("parameter \"" + key + "\" is read but not declared in the params schema");
         if (spec->type != type)
             throw SchemaError(std::string("parameter \"") + key + "\" is read as a " + param_type_name(type) +
                               " but declared a " + param_type_name(spec->type));
@@ -189,8 +192,9 @@ private:
     // the default and range would be written twice.
     void undeclared(const std::string& key, const char* getter) const {
         if (schema_)
-            throw SchemaError(std::string(getter) + "(\"" + key + "\", ...) gives a default, but the plugin has a params "
-                              "schema: read it with " + getter + "(\"" + key + "\")");
+            throw SchemaError(std::string(getter) + "(\"" + key +
+                              "\", ...) gives a default, but the plugin has a params schema: read it with " +
+                              getter + "(\"" + key + "\")");
     }
     const nlohmann::json* find(const std::string& key) {
         known_.insert(key);

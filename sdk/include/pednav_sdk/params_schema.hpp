@@ -52,12 +52,12 @@ inline const char* param_type_name(ParamType t) {
 struct ParamSpec {
     std::string key;
     ParamType type = ParamType::number;
-    std::string unit;                   // "x-unit"; empty when not given
+    std::string unit;  // "x-unit"; empty when not given
     bool has_minimum = false, has_maximum = false;
     double minimum = -HUGE_VAL, maximum = HUGE_VAL;
     nlohmann::json default_value;
     std::string description;
-    std::vector<std::string> allowed;   // "enum" of a string; empty = any string
+    std::vector<std::string> allowed;  // "enum" of a string; empty = any string
 };
 
 // The shortest text that reads back as the same double: "0.06", "200",
@@ -67,7 +67,8 @@ inline std::string format_number(double x) {
     // %g switches to an exponent when the exponent reaches the precision:
     // in the fixed range, keep at least as many digits as the integer part has.
     int min_precision = 1;
-    if (magnitude >= 1.0 && magnitude < 1e6) min_precision = static_cast<int>(std::floor(std::log10(magnitude))) + 1;
+    if (magnitude >= 1.0 && magnitude < 1e6)
+        min_precision = static_cast<int>(std::floor(std::log10(magnitude))) + 1;
     char buf[40];
     for (int precision = 1; precision <= 17; ++precision) {
         std::snprintf(buf, sizeof buf, "%.*g", std::max(precision, min_precision), x);
@@ -101,7 +102,8 @@ inline std::string range_text(const ParamSpec& p) {
 // ("window_s is 5, outside [0, 2] s"); empty when it is acceptable.
 inline std::string param_problem(const ParamSpec& p, const nlohmann::json& value) {
     const std::string unit = p.unit.empty() ? "" : " " + p.unit;
-    const std::string shown = value.is_string() ? "\"" + value.get<std::string>() + "\"" : format_value(value);
+    const std::string shown =
+        value.is_string() ? "\"" + value.get<std::string>() + "\"" : format_value(value);
     switch (p.type) {
         case ParamType::boolean:
             return value.is_boolean() ? "" : p.key + " must be true or false, not " + shown;
@@ -121,8 +123,10 @@ inline std::string param_problem(const ParamSpec& p, const nlohmann::json& value
             if (p.type == ParamType::integer && !(x == std::floor(x) && std::fabs(x) <= 9007199254740992.0))
                 return p.key + " must be an integer, not " + shown;
             if ((p.has_minimum && x < p.minimum) || (p.has_maximum && x > p.maximum)) {
-                if (p.has_minimum && p.has_maximum) return p.key + " is " + shown + ", outside " + range_text(p) + unit;
-                if (p.has_minimum) return p.key + " is " + shown + ", below the minimum " + format_number(p.minimum) + unit;
+                if (p.has_minimum && p.has_maximum)
+                    return p.key + " is " + shown + ", outside " + range_text(p) + unit;
+                if (p.has_minimum)
+                    return p.key + " is " + shown + ", below the minimum " + format_number(p.minimum) + unit;
                 return p.key + " is " + shown + ", above the maximum " + format_number(p.maximum) + unit;
             }
             return "";
@@ -151,14 +155,18 @@ public:
         if (!doc.is_object()) throw SchemaError(at + "must be a JSON object");
         only(doc, {"$schema", "title", "description", "type", "properties", "additionalProperties"}, at);
         for (const char* k : {"$schema", "title", "description"})
-            if (doc.contains(k) && !doc.at(k).is_string()) throw SchemaError(at + "\"" + k + "\" must be a string");
-        if (doc.value("type", nlohmann::json()) != "object") throw SchemaError(at + "needs \"type\": \"object\"");
+            if (doc.contains(k) && !doc.at(k).is_string())
+                throw SchemaError(at + "\"" + k + "\" must be a string");
+        if (doc.value("type", nlohmann::json()) != "object")
+            throw SchemaError(at + "needs \"type\": \"object\"");
         if (doc.value("additionalProperties", nlohmann::json()) != false)
             throw SchemaError(at + "needs \"additionalProperties\": false (unknown keys are refused)");
         auto props = doc.find("properties");
-        if (props == doc.end() || !props->is_object()) throw SchemaError(at + "needs a \"properties\" object");
+        if (props == doc.end() || !props->is_object())
+            throw SchemaError(at + "needs a \"properties\" object");
         ParamsSchema s;
-        for (auto it = props->begin(); it != props->end(); ++it) s.params_.push_back(property(it.key(), *it, at));
+        for (auto it = props->begin(); it != props->end(); ++it)
+            s.params_.push_back(property(it.key(), *it, at));
         return s;
     }
 
@@ -171,7 +179,8 @@ public:
     }
 
 private:
-    static void only(const nlohmann::json& obj, std::initializer_list<const char*> allowed, const std::string& at) {
+    static void only(const nlohmann::json& obj, std::initializer_list<const char*> allowed,
+                     const std::string& at) {
         for (auto it = obj.begin(); it != obj.end(); ++it) {
             bool ok = false;
             std::string list;
@@ -180,8 +189,8 @@ private:
                 list += (list.empty() ? "" : ", ") + std::string(a);
             }
             if (!ok)
-                throw SchemaError(at + "uses keyword \"" + it.key() + "\", outside the supported subset (" + list +
-                                  "; docs/parameters.md)");
+                throw SchemaError(at + "uses keyword \"" + it.key() + "\", outside the supported subset (" +
+                                  list + "; docs/parameters.md)");
         }
     }
 
@@ -194,15 +203,21 @@ private:
         p.key = key;
         auto t = j.find("type");
         const std::string type = t != j.end() && t->is_string() ? t->get<std::string>() : "";
-        if (type == "number") p.type = ParamType::number;
-        else if (type == "integer") p.type = ParamType::integer;
-        else if (type == "boolean") p.type = ParamType::boolean;
-        else if (type == "string") p.type = ParamType::string;
-        else throw SchemaError(at + "needs \"type\": number, integer, boolean or string");
+        if (type == "number")
+            p.type = ParamType::number;
+        else if (type == "integer")
+            p.type = ParamType::integer;
+        else if (type == "boolean")
+            p.type = ParamType::boolean;
+        else if (type == "string")
+            p.type = ParamType::string;
+        else
+            throw SchemaError(at + "needs \"type\": number, integer, boolean or string");
         const bool numeric = p.type == ParamType::number || p.type == ParamType::integer;
         for (const char* k : {"minimum", "maximum"}) {
             if (!j.contains(k)) continue;
-            if (!numeric) throw SchemaError(at + "has \"" + k + "\", which only a number or an integer takes");
+            if (!numeric)
+                throw SchemaError(at + "has \"" + k + "\", which only a number or an integer takes");
             if (!j.at(k).is_number()) throw SchemaError(at + "\"" + k + "\" must be a number");
         }
         if (j.contains("minimum")) {
@@ -222,8 +237,10 @@ private:
         }
         if (j.contains("enum")) {
             const auto& e = j.at("enum");
-            if (p.type != ParamType::string) throw SchemaError(at + "has \"enum\", which only a string takes");
-            if (!e.is_array() || e.empty()) throw SchemaError(at + "\"enum\" must be a non-empty array of strings");
+            if (p.type != ParamType::string)
+                throw SchemaError(at + "has \"enum\", which only a string takes");
+            if (!e.is_array() || e.empty())
+                throw SchemaError(at + "\"enum\" must be a non-empty array of strings");
             for (const auto& v : e) {
                 if (!v.is_string()) throw SchemaError(at + "\"enum\" must be a non-empty array of strings");
                 p.allowed.push_back(v.get<std::string>());
