@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "params_schema.hpp"
 #include "pipeline_check.hpp"
 #include "record_checks.hpp"
 
@@ -141,6 +142,7 @@ void Engine::create_instances(std::vector<std::unique_ptr<Stage>>& stages) {
         ci.instance_name = stage.instance_name.c_str();
         ci.mount = config_.mount.c_str();
         ci.imu_rate_hz = config_.imu_rate_hz;
+        check_params_against_schema(*stage.descriptor, sc);
         const pn_status_t st = stage.descriptor->create(stage.descriptor, &stage.host_context.host, &ci, &stage.self, &err);
         if (PN_FAILED(st) || !stage.self) {
             const std::string inner = err.where;

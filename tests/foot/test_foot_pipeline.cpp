@@ -352,6 +352,11 @@ TEST_CASE("foot plugins reject unknown or bad params, naming the key") {
     nlohmann::json a;
     a["pipelines"]["foot"]["attitude_estimator"]["params"]["use_magnetometer"] = "yes";
     expect_error(a, "use_magnetometer");
+    // A cross-field rule the schema cannot express: an empty trusted magnetometer band.
+    nlohmann::json m;
+    m["pipelines"]["foot"]["attitude_estimator"]["params"]["mag_min_ut"] = 120.0;
+    expect_error(m, "/pipelines/foot/attitude_estimator/params/mag_min_ut");
+    expect_error(m, "above mag_max_ut (100 uT)");
 }
 
 TEST_CASE("foot pipeline records: one position per sample, deterministic, valid covariances and quaternions") {

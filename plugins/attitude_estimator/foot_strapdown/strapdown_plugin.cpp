@@ -25,6 +25,41 @@ public:
     static constexpr const char* kDescription =
         "still-period alignment (accelerometer, tilt-compensated magnetometer), rotation-vector attitude "
         "integration with mid-interval rates and coning term, EKF feedback";
+    static constexpr const char* kParamsSchema = R"json({
+  "type": "object", "additionalProperties": false,
+  "properties": {
+    "align_still_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 600, "default": 1.0,
+      "description": "still time that triggers the alignment"},
+    "align_min_still_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 600, "default": 0.3,
+      "description": "shortest still period accepted for the alignment when motion starts"},
+    "align_timeout_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 3600, "default": 10,
+      "description": "align on the current sample after this long without a still period"},
+    "align_gyro_max_radps": {"type": "number", "x-unit": "rad/s", "minimum": 0, "maximum": 10, "default": 0.35,
+      "description": "still: |w| below this"},
+    "align_accel_dev_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 0, "maximum": 50, "default": 0.6,
+      "description": "still: |a - mean a| below this"},
+    "use_magnetometer": {"type": "boolean", "default": true,
+      "description": "initial heading from a trusted magnetometer (field strength within mag_min_ut to mag_max_ut)"},
+    "mag_min_ut": {"type": "number", "x-unit": "uT", "minimum": 0, "maximum": 1000, "default": 15,
+      "description": "weaker fields are not trusted; at most mag_max_ut"},
+    "mag_max_ut": {"type": "number", "x-unit": "uT", "minimum": 0, "maximum": 1000, "default": 100,
+      "description": "stronger fields are not trusted; at least mag_min_ut"},
+    "declination_deg": {"type": "number", "x-unit": "deg", "minimum": -180, "maximum": 180, "default": 0,
+      "description": "magnetic declination, east positive: true heading = magnetic + declination"},
+    "initial_heading_deg": {"type": "number", "x-unit": "deg", "minimum": -360, "maximum": 360, "default": 0,
+      "description": "heading without a trusted magnetometer, clockwise from north"},
+    "gyro_bias_from_still": {"type": "boolean", "default": true,
+      "description": "initial gyro bias = mean rate over the alignment's still period, when its sd is below bias_still_max_sd_radps"},
+    "bias_still_max_sd_radps": {"type": "number", "x-unit": "rad/s", "minimum": 0, "maximum": 10, "default": 0.01,
+      "description": "the still period gives the initial gyro bias (gyro_bias_from_still) only when the rate's sd over it is below this (truly still)"},
+    "coning": {"type": "boolean", "default": true,
+      "description": "second-order coning term in the rotation vector"},
+    "max_dt_s": {"type": "number", "x-unit": "s", "minimum": 1e-4, "maximum": 10, "default": 0.1,
+      "description": "longer gaps between samples are integrated as this"},
+    "gyro_range_radps": {"type": "number", "x-unit": "rad/s", "minimum": 0, "maximum": 1000, "default": 0,
+      "description": "the gyro's full-scale range: clipped runs (>= 99.5 % of it) get their missing rotation restored; 0 = off (a property of the sensor, not a tuning constant)"}
+  }
+})json";
     static constexpr uint64_t kConsumes =
         PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_MAG) | PN_REC_MASK(PN_REC_ATTITUDE_CORRECTION);
     static constexpr uint64_t kProduces = PN_REC_MASK(PN_REC_ATTITUDE);
@@ -61,21 +96,24 @@ public:
 private:
     static pednav::navmath::StrapdownConfig read(Params& p) {
         pednav::navmath::StrapdownConfig c;
-        c.align_still_s = p.number("align_still_s", c.align_still_s, 0.0, 600.0);
-        c.align_min_still_s = p.number("align_min_still_s", c.align_min_still_s, 0.0, 600.0);
-        c.align_timeout_s = p.number("align_timeout_s", c.align_timeout_s, 0.0, 3600.0);
-        c.align_gyro_max_radps = p.number("align_gyro_max_radps", c.align_gyro_max_radps, 0.0, 10.0);
-        c.align_accel_dev_mps2 = p.number("align_accel_dev_mps2", c.align_accel_dev_mps2, 0.0, 50.0);
-        c.use_magnetometer = p.boolean("use_magnetometer", c.use_magnetometer);
-        c.mag_min_ut = p.number("mag_min_ut", c.mag_min_ut, 0.0, 1000.0);
-        c.mag_max_ut = p.number("mag_max_ut", c.mag_max_ut, 0.0, 1000.0);
-        c.declination_deg = p.number("declination_deg", c.declination_deg, -180.0, 180.0);
-        c.initial_heading_deg = p.number("initial_heading_deg", c.initial_heading_deg, -360.0, 360.0);
-        c.gyro_bias_from_still = p.boolean("gyro_bias_from_still", c.gyro_bias_from_still);
-        c.bias_still_max_sd_radps = p.number("bias_still_max_sd_radps", c.bias_still_max_sd_radps, 0.0, 10.0);
-        c.coning = p.boolean("coning", c.coning);
-        c.max_dt_s = p.number("max_dt_s", c.max_dt_s, 1e-4, 10.0);
-        c.gyro_range_radps = p.number("gyro_range_radps", c.gyro_range_radps, 0.0, 1000.0);
+        c.align_still_s = p.number("align_still_s");
+        c.align_min_still_s = p.number("align_min_still_s");
+        c.align_timeout_s = p.number("align_timeout_s");
+        c.align_gyro_max_radps = p.number("align_gyro_max_radps");
+        c.align_accel_dev_mps2 = p.number("align_accel_dev_mps2");
+        c.use_magnetometer = p.boolean("use_magnetometer");
+        c.mag_min_ut = p.number("mag_min_ut");
+        c.mag_max_ut = p.number("mag_max_ut");
+        c.declination_deg = p.number("declination_deg");
+        c.initial_heading_deg = p.number("initial_heading_deg");
+        c.gyro_bias_from_still = p.boolean("gyro_bias_from_still");
+        c.bias_still_max_sd_radps = p.number("bias_still_max_sd_radps");
+        c.coning = p.boolean("coning");
+        c.max_dt_s = p.number("max_dt_s");
+        c.gyro_range_radps = p.number("gyro_range_radps");
+        if (c.mag_min_ut > c.mag_max_ut)
+            Params::fail("mag_min_ut", "is " + format_number(c.mag_min_ut) + " uT, above mag_max_ut (" +
+                                           format_number(c.mag_max_ut) + " uT): no field would be trusted");
         return c;
     }
 

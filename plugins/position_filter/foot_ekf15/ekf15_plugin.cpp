@@ -25,6 +25,70 @@ public:
     static constexpr uint64_t kConsumes = Join::kRecordMask;
     static constexpr uint64_t kProduces =
         PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_ATTITUDE_CORRECTION);
+    static constexpr const char* kParamsSchema = R"json({
+  "type": "object", "additionalProperties": false,
+  "properties": {
+    "zupt": {"type": "boolean", "default": true, "description": "zero-velocity update in stance"},
+    "zaru": {"type": "boolean", "default": true, "description": "zero angular rate update in stance"},
+    "hupt": {"type": "boolean", "default": true, "description": "height update after a level-floor step"},
+    "gravity_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 0, "maximum": 20, "default": 0,
+      "description": "gravity subtracted in the mechanization; 0 = mean |a| over the first stance (the vertical then holds for a sensor that reads off at rest)"},
+    "accel_rescale_above": {"type": "number", "minimum": 0, "maximum": 1, "default": 1,
+      "description": "with gravity learned: when |a| over the first stance is off local_gravity_mps2 by more than this fraction, the accelerometer is rescaled to read local_gravity_mps2 at rest (a scale error lengthens or shortens every stride, and ZUPT cannot see it); within it the reading is taken as gravity. A bias along gravity looks the same at rest, and rescaling it makes the strides wrong; 0 = always, 1 = never"},
+    "local_gravity_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 9.7, "maximum": 9.9, "default": 9.80665,
+      "description": "gravity where the walk is (9.78 at the equator to 9.83 at the poles); used by accel_rescale_above"},
+    "gyro_noise_radps_per_sqrthz": {"type": "number", "x-unit": "rad/s/sqrt(Hz)", "minimum": 0, "maximum": 10, "default": 0.002,
+      "description": "angle random walk density (Q of phi)"},
+    "accel_noise_mps2_per_sqrthz": {"type": "number", "x-unit": "m/s^2/sqrt(Hz)", "minimum": 0, "maximum": 100, "default": 0.2,
+      "description": "velocity random walk density (Q of dv)"},
+    "gyro_bias_walk_radps_per_sqrts": {"type": "number", "x-unit": "rad/s/sqrt(s)", "minimum": 0, "maximum": 10, "default": 1e-5,
+      "description": "gyro bias random walk (Q of dbg)"},
+    "accel_bias_walk_mps2_per_sqrts": {"type": "number", "x-unit": "m/s^2/sqrt(s)", "minimum": 0, "maximum": 100, "default": 1e-3,
+      "description": "accel bias random walk (Q of dba)"},
+    "init_roll_pitch_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 0, "maximum": 4, "default": 0.02,
+      "description": "P0 of phi_x, phi_y"},
+    "init_heading_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 0, "maximum": 4, "default": 0,
+      "description": "P0 of phi_z (heading is a reference)"},
+    "init_gyro_bias_sd_radps": {"type": "number", "x-unit": "rad/s", "minimum": 0, "maximum": 10, "default": 0.001,
+      "description": "P0 of dbg"},
+    "init_accel_bias_sd_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 0, "maximum": 100, "default": 0.1,
+      "description": "P0 of dba"},
+    "init_velocity_sd_mps": {"type": "number", "x-unit": "m/s", "minimum": 0, "maximum": 100, "default": 0.01,
+      "description": "P0 of dv"},
+    "zupt_sd_mps": {"type": "number", "x-unit": "m/s", "minimum": 1e-6, "maximum": 100, "default": 0.01,
+      "description": "ZUPT noise sd at rest"},
+    "zupt_lever_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.3,
+      "description": "ZUPT sd grows by this x |w - bg| (sensor ahead of the pivot)"},
+    "sensor_height_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 0.5, "default": 0.05,
+      "description": "height of the sensor above the sole: the ZUPT expects the velocity of a foot rolling on its contact point, h (w x up), instead of zero; 0 = the paper's ZUPT"},
+    "zaru_sd_radps": {"type": "number", "x-unit": "rad/s", "minimum": 1e-6, "maximum": 100, "default": 0.02,
+      "description": "ZARU noise sd"},
+    "zaru_max_radps": {"type": "number", "x-unit": "rad/s", "minimum": 0, "maximum": 100, "default": 0.1,
+      "description": "ZARU only while |w - bg| is below this (a rolling foot is not still)"},
+    "zaru_moves_position": {"type": "boolean", "default": true,
+      "description": "ZARU also corrects the position (through the bias-position correlation); false = its gain on the position errors is zero (a consider update, Joseph form), which keeps a standing foot that sways from being moved (see Weak points in docs/foot-pipeline.md)"},
+    "hupt_sd_m": {"type": "number", "x-unit": "m", "minimum": 1e-6, "maximum": 100, "default": 0.01,
+      "description": "HUPT noise sd"},
+    "level_match_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.1,
+      "description": "after stairs, a level within this of one stood on before is that level, and HUPT holds it at that height (level memory); 0 = off"},
+    "min_stance_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 10, "default": 0,
+      "description": "shorter stances do not close a stride"},
+    "min_swing_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 10, "default": 0.15,
+      "description": "motion time between counted stances"},
+    "min_stride_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.2,
+      "description": "horizontal motion between counted stances"},
+    "heel_strike_deg": {"type": "number", "x-unit": "deg", "minimum": 0, "maximum": 90, "default": 12,
+      "description": "toe-up pitch in the swing that marks a level step"},
+    "max_dt_s": {"type": "number", "x-unit": "s", "minimum": 1e-4, "maximum": 10, "default": 0.1,
+      "description": "longer gaps between samples are integrated as this"},
+    "filter_rate_hz": {"type": "number", "x-unit": "Hz", "minimum": 0, "maximum": 10000, "default": 0,
+      "description": "covariance propagation and stance updates at most at this rate (mechanization stays per sample); 0 = every sample"},
+    "swing_propagation_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 1, "default": 0.1,
+      "description": "in the swing (no measurements) the transitions are multiplied together and the covariance propagated once per this interval, and at the first filter step in stance, with the summed process noise half before and half after; the per-sample position covariance holds in between; 0 = every filter step"},
+    "joseph_form": {"type": "boolean", "default": true,
+      "description": "covariance update in Joseph form (eq. (33)); false = P - K H P, equal for the optimal gain, a third of the arithmetic"}
+  }
+})json";
 
     FootInsFilter(Params& p, const CreateContext&) : ins_(read(p)) {}
 
@@ -102,39 +166,37 @@ private:
 
     static pednav::zupt_ins::FootInsConfig read(Params& p) {
         pednav::zupt_ins::FootInsConfig c;
-        c.zupt = p.boolean("zupt", c.zupt);
-        c.zaru = p.boolean("zaru", c.zaru);
-        c.hupt = p.boolean("hupt", c.hupt);
-        c.gravity_mps2 = p.number("gravity_mps2", c.gravity_mps2, 0.0, 20.0);
-        c.accel_rescale_above = p.number("accel_rescale_above", c.accel_rescale_above, 0.0, 1.0);
-        c.local_gravity_mps2 = p.number("local_gravity_mps2", c.local_gravity_mps2, 9.7, 9.9);
-        c.gyro_noise_radps_per_sqrthz = p.number("gyro_noise_radps_per_sqrthz", c.gyro_noise_radps_per_sqrthz, 0.0, 10.0);
-        c.accel_noise_mps2_per_sqrthz = p.number("accel_noise_mps2_per_sqrthz", c.accel_noise_mps2_per_sqrthz, 0.0, 100.0);
-        c.gyro_bias_walk_radps_per_sqrts =
-            p.number("gyro_bias_walk_radps_per_sqrts", c.gyro_bias_walk_radps_per_sqrts, 0.0, 10.0);
-        c.accel_bias_walk_mps2_per_sqrts =
-            p.number("accel_bias_walk_mps2_per_sqrts", c.accel_bias_walk_mps2_per_sqrts, 0.0, 100.0);
-        c.init_roll_pitch_sd_rad = p.number("init_roll_pitch_sd_rad", c.init_roll_pitch_sd_rad, 0.0, 4.0);
-        c.init_heading_sd_rad = p.number("init_heading_sd_rad", c.init_heading_sd_rad, 0.0, 4.0);
-        c.init_gyro_bias_sd_radps = p.number("init_gyro_bias_sd_radps", c.init_gyro_bias_sd_radps, 0.0, 10.0);
-        c.init_accel_bias_sd_mps2 = p.number("init_accel_bias_sd_mps2", c.init_accel_bias_sd_mps2, 0.0, 100.0);
-        c.init_velocity_sd_mps = p.number("init_velocity_sd_mps", c.init_velocity_sd_mps, 0.0, 100.0);
-        c.zupt_sd_mps = p.number("zupt_sd_mps", c.zupt_sd_mps, 1e-6, 100.0);
-        c.zaru_sd_radps = p.number("zaru_sd_radps", c.zaru_sd_radps, 1e-6, 100.0);
-        c.zaru_max_radps = p.number("zaru_max_radps", c.zaru_max_radps, 0.0, 100.0);
-        c.zaru_moves_position = p.boolean("zaru_moves_position", c.zaru_moves_position);
-        c.zupt_lever_m = p.number("zupt_lever_m", c.zupt_lever_m, 0.0, 10.0);
-        c.sensor_height_m = p.number("sensor_height_m", c.sensor_height_m, 0.0, 0.5);
-        c.hupt_sd_m = p.number("hupt_sd_m", c.hupt_sd_m, 1e-6, 100.0);
-        c.level_match_m = p.number("level_match_m", c.level_match_m, 0.0, 10.0);
-        c.min_stance_s = p.number("min_stance_s", c.min_stance_s, 0.0, 10.0);
-        c.min_swing_s = p.number("min_swing_s", c.min_swing_s, 0.0, 10.0);
-        c.min_stride_m = p.number("min_stride_m", c.min_stride_m, 0.0, 10.0);
-        c.heel_strike_deg = p.number("heel_strike_deg", c.heel_strike_deg, 0.0, 90.0);
-        c.max_dt_s = p.number("max_dt_s", c.max_dt_s, 1e-4, 10.0);
-        c.filter_rate_hz = p.number("filter_rate_hz", c.filter_rate_hz, 0.0, 10000.0);
-        c.swing_propagation_s = p.number("swing_propagation_s", c.swing_propagation_s, 0.0, 1.0);
-        c.joseph_form = p.boolean("joseph_form", c.joseph_form);
+        c.zupt = p.boolean("zupt");
+        c.zaru = p.boolean("zaru");
+        c.hupt = p.boolean("hupt");
+        c.gravity_mps2 = p.number("gravity_mps2");
+        c.accel_rescale_above = p.number("accel_rescale_above");
+        c.local_gravity_mps2 = p.number("local_gravity_mps2");
+        c.gyro_noise_radps_per_sqrthz = p.number("gyro_noise_radps_per_sqrthz");
+        c.accel_noise_mps2_per_sqrthz = p.number("accel_noise_mps2_per_sqrthz");
+        c.gyro_bias_walk_radps_per_sqrts = p.number("gyro_bias_walk_radps_per_sqrts");
+        c.accel_bias_walk_mps2_per_sqrts = p.number("accel_bias_walk_mps2_per_sqrts");
+        c.init_roll_pitch_sd_rad = p.number("init_roll_pitch_sd_rad");
+        c.init_heading_sd_rad = p.number("init_heading_sd_rad");
+        c.init_gyro_bias_sd_radps = p.number("init_gyro_bias_sd_radps");
+        c.init_accel_bias_sd_mps2 = p.number("init_accel_bias_sd_mps2");
+        c.init_velocity_sd_mps = p.number("init_velocity_sd_mps");
+        c.zupt_sd_mps = p.number("zupt_sd_mps");
+        c.zaru_sd_radps = p.number("zaru_sd_radps");
+        c.zaru_max_radps = p.number("zaru_max_radps");
+        c.zaru_moves_position = p.boolean("zaru_moves_position");
+        c.zupt_lever_m = p.number("zupt_lever_m");
+        c.sensor_height_m = p.number("sensor_height_m");
+        c.hupt_sd_m = p.number("hupt_sd_m");
+        c.level_match_m = p.number("level_match_m");
+        c.min_stance_s = p.number("min_stance_s");
+        c.min_swing_s = p.number("min_swing_s");
+        c.min_stride_m = p.number("min_stride_m");
+        c.heel_strike_deg = p.number("heel_strike_deg");
+        c.max_dt_s = p.number("max_dt_s");
+        c.filter_rate_hz = p.number("filter_rate_hz");
+        c.swing_propagation_s = p.number("swing_propagation_s");
+        c.joseph_form = p.boolean("joseph_form");
         return c;
     }
 

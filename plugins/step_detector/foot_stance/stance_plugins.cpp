@@ -15,13 +15,13 @@ using pednav::zupt_ins::StanceDetector;
 // is larger, so the windows hold at any rate up to it.
 double capacity_rate(const CreateContext& ctx) { return std::max(2.0 * ctx.imu_rate_hz, 1000.0); }
 
-// The window parameters both detectors share (defaults from the detector's config).
+// The window parameters both detectors share (each declares its defaults).
 void read_windows(Params& p, pednav::zupt_ins::StanceWindows& w) {
-    w.window_s = p.number("window_s", w.window_s, 0.0, 2.0);
-    w.median_window_s = p.number("median_window_s", w.median_window_s, 0.0, 2.0);
-    w.adaptive_window_s = p.number("adaptive_window_s", w.adaptive_window_s, 0.0, 10.0);
-    w.adaptive_ratio = p.number("adaptive_ratio", w.adaptive_ratio, 1.0, 1e6);
-    w.adaptive_max = p.number("adaptive_max", w.adaptive_max, 0.0, 1e12);
+    w.window_s = p.number("window_s");
+    w.median_window_s = p.number("median_window_s");
+    w.adaptive_window_s = p.number("adaptive_window_s");
+    w.adaptive_ratio = p.number("adaptive_ratio");
+    w.adaptive_max = p.number("adaptive_max");
 }
 
 class StanceBase : public StepDetector {
@@ -59,13 +59,36 @@ public:
     static constexpr const char* kDescription =
         "acceleration magnitude band, std of |a| over a centred window, gyro norm, majority filter "
         "(foot-imu-zupt-zaru-ekf sec. 2.3), windows in seconds";
+    static constexpr const char* kParamsSchema = R"json({
+  "type": "object", "additionalProperties": false,
+  "properties": {
+    "accel_min_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 0, "maximum": 100, "default": 9,
+      "description": "C1: lower bound of the band on |a| (eq. 17); below accel_max_mps2"},
+    "accel_max_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 0, "maximum": 100, "default": 11,
+      "description": "C1: upper bound of the band on |a| (eq. 17); above accel_min_mps2"},
+    "accel_std_max_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 0, "maximum": 100, "default": 0.5,
+      "description": "C2: stance needs the std of |a| over the window below this (eq. 20)"},
+    "gyro_max_radps": {"type": "number", "x-unit": "rad/s", "minimum": 0, "maximum": 100, "default": 1.0,
+      "description": "C3: stance needs |w| below this (eq. 22)"},
+    "window_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 2, "default": 0.15,
+      "description": "centred window of eq. (18)-(19)"},
+    "median_window_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 2, "default": 0.11,
+      "description": "majority filter over the stance decisions, a centred window"},
+    "adaptive_window_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 10, "default": 0,
+      "description": "adaptive threshold: centred window of the running minimum of the statistic max(std|a| / accel_std_max_mps2, |w| / gyro_max_radps); 0 = the paper's fixed conditions only"},
+    "adaptive_ratio": {"type": "number", "minimum": 1, "maximum": 1e6, "default": 2.0,
+      "description": "adaptive threshold: a sample is also stance when the statistic is at most this times its running minimum (and below adaptive_max)"},
+    "adaptive_max": {"type": "number", "minimum": 0, "maximum": 1e12, "default": 4.0,
+      "description": "adaptive threshold: the statistic must also be below this"}
+  }
+})json";
 
     MultiConditionStance(Params& p, const CreateContext& ctx) {
         pednav::zupt_ins::MultiConditionConfig c;
-        c.accel_min_mps2 = p.number("accel_min_mps2", c.accel_min_mps2, 0.0, 100.0);
-        c.accel_max_mps2 = p.number("accel_max_mps2", c.accel_max_mps2, 0.0, 100.0);
-        c.accel_std_max_mps2 = p.number("accel_std_max_mps2", c.accel_std_max_mps2, 0.0, 100.0);
-        c.gyro_max_radps = p.number("gyro_max_radps", c.gyro_max_radps, 0.0, 100.0);
+        c.accel_min_mps2 = p.number("accel_min_mps2");
+        c.accel_max_mps2 = p.number("accel_max_mps2");
+        c.accel_std_max_mps2 = p.number("accel_std_max_mps2");
+        c.gyro_max_radps = p.number("gyro_max_radps");
         read_windows(p, c);
         if (c.accel_min_mps2 >= c.accel_max_mps2)
             Params::fail("accel_max_mps2", "must be greater than accel_min_mps2");
@@ -83,13 +106,36 @@ public:
     static constexpr const char* kDescription =
         "stance hypothesis optimal detector (Skog et al. 2010) over a centred window in seconds, "
         "adaptive threshold relative to the minimum over a gait cycle, majority filter";
+    static constexpr const char* kParamsSchema = R"json({
+  "type": "object", "additionalProperties": false,
+  "properties": {
+    "accel_sd_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 1e-6, "maximum": 100, "default": 1.0,
+      "description": "sigma_a of the GLRT"},
+    "gyro_sd_radps": {"type": "number", "x-unit": "rad/s", "minimum": 1e-6, "maximum": 100, "default": 0.5,
+      "description": "sigma_w of the GLRT"},
+    "threshold": {"type": "number", "minimum": 0, "maximum": 1e12, "default": 0.5,
+      "description": "gamma: stance when the test statistic T < gamma (T is normalised by the window length)"},
+    "gravity_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": 0, "maximum": 20, "default": 0,
+      "description": "g in the test; 0 = the window's |mean a|, which makes the test blind to accelerometer scale errors"},
+    "window_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 2, "default": 0.06,
+      "description": "centred GLRT window"},
+    "median_window_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 2, "default": 0.05,
+      "description": "majority filter over the stance decisions, a centred window"},
+    "adaptive_window_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 10, "default": 1.0,
+      "description": "adaptive threshold: centred window of the running minimum of T (longer than one gait cycle); 0 = fixed threshold only"},
+    "adaptive_ratio": {"type": "number", "minimum": 1, "maximum": 1e6, "default": 3.0,
+      "description": "adaptive threshold: a sample is also stance when T is at most this times its running minimum (and below adaptive_max)"},
+    "adaptive_max": {"type": "number", "minimum": 0, "maximum": 1e12, "default": 60,
+      "description": "adaptive threshold: T must also be below this"}
+  }
+})json";
 
     ShoeStance(Params& p, const CreateContext& ctx) {
         pednav::zupt_ins::ShoeConfig c;
-        c.accel_sd_mps2 = p.number("accel_sd_mps2", c.accel_sd_mps2, 1e-6, 100.0);
-        c.gyro_sd_radps = p.number("gyro_sd_radps", c.gyro_sd_radps, 1e-6, 100.0);
-        c.threshold = p.number("threshold", c.threshold, 0.0, 1e12);
-        c.gravity_mps2 = p.number("gravity_mps2", c.gravity_mps2, 0.0, 20.0);
+        c.accel_sd_mps2 = p.number("accel_sd_mps2");
+        c.gyro_sd_radps = p.number("gyro_sd_radps");
+        c.threshold = p.number("threshold");
+        c.gravity_mps2 = p.number("gravity_mps2");
         read_windows(p, c);
         detector_ = std::make_unique<StanceDetector>(c, capacity_rate(ctx));
     }

@@ -47,6 +47,9 @@ inline pn_status_t status_from_exception(pn_error_t* err, const char* where) noe
     } catch (const ConfigError& e) {
         fill_error(err, PN_E_INVALID_CONFIG, e.where().c_str(), e.what());
         return PN_E_INVALID_CONFIG;
+    } catch (const SchemaError& e) {
+        fill_error(err, PN_E_INTERNAL, where, e.what());
+        return PN_E_INTERNAL;
     } catch (const NumericError& e) {
         fill_error(err, PN_E_NUMERIC, where, e.what());
         return PN_E_NUMERIC;
@@ -78,10 +81,32 @@ struct Instance {
     const pnp_host_t* host = nullptr;
 };
 
+template <class T, class = void>
+struct SchemaOf {
+    static constexpr const char* value = nullptr;
+};
+template <class T>
+struct SchemaOf<T, std::void_t<decltype(T::kParamsSchema)>> {
+    static constexpr const char* value = T::kParamsSchema;
+};
+
+// T's params schema, parsed at its first create (NULL without one). A schema
+// outside the subset throws SchemaError at every create.
+template <class T>
+const ParamsSchema* schema_of() {
+    if constexpr (SchemaOf<T>::value == nullptr) {
+        return nullptr;
+    } else {
+        static const ParamsSchema schema = ParamsSchema::parse(SchemaOf<T>::value);
+        return &schema;
+    }
+}
+
 template <class T>
 std::unique_ptr<T> construct(const std::string& params_json, const CreateContext& context) {
-    Params params(params_json);
+    Params params(params_json, schema_of<T>());
     auto node = std::make_unique<T>(params, context);
+    params.check_every_declared_read();
     params.check_no_unknown_keys();
     return node;
 }
@@ -224,7 +249,7 @@ struct Trampolines {
         auto* inst = self_of(self);
         try {
             std::string text(json ? json : "", json ? len : 0);
-            Params params(text);
+            Params params(text, schema_of<T>());
             if (!inst->node->reconfigure(params)) {
                 fill_error(err, PN_E_UNSUPPORTED, T::kId, "this plugin cannot be reconfigured live");
                 return PN_E_UNSUPPORTED;
@@ -320,15 +345,6 @@ template <class T>
 struct FeaturesOf<T, std::void_t<decltype(T::kFeatures)>> {
     static constexpr const char* const* value = T::kFeatures;
 };
-template <class T, class = void>
-struct SchemaOf {
-    static constexpr const char* value = nullptr;
-};
-template <class T>
-struct SchemaOf<T, std::void_t<decltype(T::kParamsSchema)>> {
-    static constexpr const char* value = T::kParamsSchema;
-};
-
 template <class T, class = void>
 struct VendorOf {
     static constexpr const char* value = "";

@@ -1,5 +1,12 @@
 // Strict, typed access to a plugin's "params" object.
 //
+// With a params schema (the plugin's kParamsSchema, params_schema.hpp), the
+// getters take only the key: p.number("window_s") returns the config's value
+// or the schema's default, checked against the schema's type and range.
+// Reading a key the schema does not declare, or leaving a declared one unread,
+// is a SchemaError (a mistake in the plugin, reported at create). Without a
+// schema, the getters take the default and range as arguments, as before.
+//
 // Every getter records the key as known; check_no_unknown_keys() then rejects
 // any key the plugin never asked for, naming it, so a typo in a config is an
 // error instead of a silently ignored setting. Errors throw ConfigError with
@@ -14,6 +21,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "params_schema.hpp"
 
 namespace pednav::sdk {
 
@@ -31,7 +40,8 @@ private:
 class Params {
 public:
     Params() : json_(nlohmann::json::object()) {}
-    explicit Params(const std::string& text) {
+    // `schema` (may be NULL: no schema) must outlive the Params.
+    explicit Params(const std::string& text, const ParamsSchema* schema = nullptr) : schema_(schema) {
         if (text.empty()) {
             json_ = nlohmann::json::object();
             return;
@@ -45,9 +55,22 @@ public:
         if (!json_.is_object()) throw ConfigError("", "params must be a JSON object");
     }
 
+    const ParamsSchema* schema() const { return schema_; }
+
+    // Getters of a plugin with a schema: the value, or the schema's default.
+    double number(const std::string& key) { return declared(key, ParamType::number).get<double>(); }
+    long integer(const std::string& key) {
+        const nlohmann::json& v = declared(key, ParamType::integer);
+        return v.is_number_integer() ? v.get<long>() : static_cast<long>(v.get<double>());
+    }
+    bool boolean(const std::string& key) { return declared(key, ParamType::boolean).get<bool>(); }
+    std::string text(const std::string& key) { return declared(key, ParamType::string).get<std::string>(); }
+
+    // Getters of a plugin without a schema.
     // A finite number in [min, max]; `fallback` when the key is absent.
     double number(const std::string& key, double fallback,
                   double min = -HUGE_VAL, double max = HUGE_VAL) {
+        undeclared(key, "number");
         const nlohmann::json* v = find(key);
         if (!v) return fallback;
         if (!v->is_number()) fail(key, "must be a number");
@@ -60,6 +83,7 @@ public:
 
     long integer(const std::string& key, long fallback, long min = -2147483647L,
                  long max = 2147483647L) {
+        undeclared(key, "integer");
         const nlohmann::json* v = find(key);
         if (!v) return fallback;
         if (!v->is_number_integer()) fail(key, "must be an integer");
@@ -71,6 +95,7 @@ public:
     }
 
     bool boolean(const std::string& key, bool fallback) {
+        undeclared(key, "boolean");
         const nlohmann::json* v = find(key);
         if (!v) return fallback;
         if (!v->is_boolean()) fail(key, "must be true or false");
@@ -80,6 +105,7 @@ public:
     // A string, optionally one of `allowed`.
     std::string text(const std::string& key, const std::string& fallback,
                      const std::vector<std::string>& allowed = {}) {
+        undeclared(key, "text");
         const nlohmann::json* v = find(key);
         if (!v) return fallback;
         if (!v->is_string()) fail(key, "must be a string");
@@ -97,8 +123,12 @@ public:
     }
 
     // An array of exactly `size` finite numbers (any size when size == 0).
+    // Arrays are outside the schema subset: for plugins without a schema.
     std::vector<double> numbers(const std::string& key, const std::vector<double>& fallback,
                                 size_t size = 0) {
+        if (schema_)
+            throw SchemaError("parameter \"" + key +
+                              "\" is read as an array, which the params schema subset has not");
         const nlohmann::json* v = find(key);
         if (!v) return fallback;
         if (!v->is_array()) fail(key, "must be an array of numbers");
@@ -125,11 +155,47 @@ public:
                 throw ConfigError("/" + it.key(), "unknown parameter \"" + it.key() + "\"");
     }
 
+    // With a schema: throws SchemaError for the first declared parameter no
+    // getter read (the plugin's behaviour must follow every key it declares).
+    void check_every_declared_read() const {
+        if (!schema_) return;
+        for (const auto& p : schema_->params())
+            if (!known_.count(p.key))
+                throw SchemaError("parameter \"" + p.key +
+                                  "\" is declared in the params schema but the plugin never reads it");
+    }
+
     [[noreturn]] static void fail(const std::string& key, const std::string& what) {
         throw ConfigError("/" + key, "parameter \"" + key + "\" " + what);
     }
 
 private:
+    // The value of a declared key, or its default; throws SchemaError for a
+    // key the schema lacks or of another type, ConfigError for a bad value.
+    const nlohmann::json& declared(const std::string& key, ParamType type) {
+        if (!schema_)
+            throw SchemaError("parameter \"" + key +
+                              "\" is read without a default, but the plugin has no params schema");
+        const ParamSpec* spec = schema_->find(key);
+        if (!spec)
+            throw SchemaError("parameter \"" + key + "\" is read but not declared in the params schema");
+        if (spec->type != type)
+            throw SchemaError(std::string("parameter \"") + key + "\" is read as a " + param_type_name(type) +
+                              " but declared a " + param_type_name(spec->type));
+        const nlohmann::json* v = find(key);
+        if (!v) return spec->default_value;
+        const std::string problem = param_problem(*spec, *v);
+        if (!problem.empty()) throw ConfigError("/" + key, problem);
+        return *v;
+    }
+    // The getters with a default are for plugins without a schema: with one,
+    // the default and range would be written twice.
+    void undeclared(const std::string& key, const char* getter) const {
+        if (schema_)
+            throw SchemaError(std::string(getter) + "(\"" + key +
+                              "\", ...) gives a default, but the plugin has a params schema: read it with " +
+                              getter + "(\"" + key + "\")");
+    }
     const nlohmann::json* find(const std::string& key) {
         known_.insert(key);
         auto it = json_.find(key);
@@ -143,6 +209,7 @@ private:
     }
 
     nlohmann::json json_;
+    const ParamsSchema* schema_ = nullptr;
     std::set<std::string> known_;
 };
 
