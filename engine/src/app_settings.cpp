@@ -7,7 +7,10 @@
 #include <fstream>
 #include <iterator>
 
+#include <nlohmann/json.hpp>
+
 #include "engine.hpp"
+#include "params_schema.hpp"
 #include "record_checks.hpp"
 
 namespace pednav::engine {
@@ -186,6 +189,18 @@ pn_status_t Engine::reconfigure(const std::string& name, const std::string& para
     if (!PNP_HAS_SLOT(s->ops, pnp_node_ops_t, reconfigure)) {
         set_error(err, PN_E_UNSUPPORTED, s->instance_name, s->plugin_id + " cannot change its params live");
         return PN_E_UNSUPPORTED;
+    }
+    // The same checks as the config's: a JSON object, then the plugin's schema.
+    const nlohmann::json doc = nlohmann::json::parse(params_json, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) {
+        set_error(err, PN_E_INVALID_CONFIG, "/params", "the params must be a JSON object");
+        return PN_E_INVALID_CONFIG;
+    }
+    try {
+        check_params_against_schema(*s->descriptor, StageConfig{s->role, s->plugin_id, doc.dump(), ""});
+    } catch (const ConfigProblem& p) {
+        set_error(err, p.status, p.where, p.message);
+        return p.status;
     }
     pn_error_t inner{};
     inner.struct_size = sizeof inner;

@@ -218,3 +218,24 @@ TEST_CASE("an output queue larger than PN_OUTPUT_QUEUE_MAX is refused") {
     CHECK(e.status() == PN_E_INVALID_ARGUMENT);
     CHECK(contains(e.error().message, "PN_OUTPUT_QUEUE_MAX"));
 }
+
+TEST_CASE("reconfigure checks the new params against the plugin's schema, as the config") {
+    Engine e(make_config({{"step_detector", "org.pednav.test.schema_steps"}}), {fixture_dir("schema")});
+    REQUIRE_MESSAGE(e.status() == PN_OK, e.error().message);
+    pn_error_t err = make_error();
+    CHECK(pn_engine_reconfigure(e.get(), "step_detector", R"({"every_n": 5000})", 0, &err) == PN_E_INVALID_CONFIG);
+    CHECK(std::string(err.where) == "/params/every_n");
+    CHECK_MESSAGE(contains(err.message, "every_n is 5000, outside [1, 1000]"), err.message);
+    CHECK(pn_engine_reconfigure(e.get(), "step_detector", R"({"gain": "high"})", 0, &err) == PN_E_INVALID_CONFIG);
+    CHECK(std::string(err.where) == "/params/gain");
+    CHECK(pn_engine_reconfigure(e.get(), "step_detector", "[1]", 0, &err) == PN_E_INVALID_CONFIG);
+    CHECK(std::string(err.where) == "/params");
+    // In range: taken, and the gait phases carry the new gain from the next sample on.
+    REQUIRE(push(e, walk(0, 5)) == PN_OK);
+    REQUIRE(pn_engine_set_output_mask(e.get(), PN_REC_MASK(PN_REC_GAIT_PHASE)) == PN_OK);
+    REQUIRE(pn_engine_reconfigure(e.get(), "step_detector", R"({"gain": 1.5, "sign": "negative"})", 0, &err) == PN_OK);
+    REQUIRE(push(e, walk(5, 5)) == PN_OK);
+    const auto g = of_type(e.poll_all(), PN_REC_GAIT_PHASE);
+    REQUIRE(g.size() == 5);  // samples 4..8: 4 was processed after the change (it waited for sample 5)
+    for (const auto& o : g) CHECK(o.gait_phase.statistic == -1.5);
+}
