@@ -95,22 +95,7 @@ public:
 
 private:
     static pednav::navmath::StrapdownConfig read(Params& p) {
-        pednav::navmath::StrapdownConfig c;
-        c.align_still_s = p.number("align_still_s");
-        c.align_min_still_s = p.number("align_min_still_s");
-        c.align_timeout_s = p.number("align_timeout_s");
-        c.align_gyro_max_radps = p.number("align_gyro_max_radps");
-        c.align_accel_dev_mps2 = p.number("align_accel_dev_mps2");
-        c.use_magnetometer = p.boolean("use_magnetometer");
-        c.mag_min_ut = p.number("mag_min_ut");
-        c.mag_max_ut = p.number("mag_max_ut");
-        c.declination_deg = p.number("declination_deg");
-        c.initial_heading_deg = p.number("initial_heading_deg");
-        c.gyro_bias_from_still = p.boolean("gyro_bias_from_still");
-        c.bias_still_max_sd_radps = p.number("bias_still_max_sd_radps");
-        c.coning = p.boolean("coning");
-        c.max_dt_s = p.number("max_dt_s");
-        c.gyro_range_radps = p.number("gyro_range_radps");
+        const pednav::navmath::StrapdownConfig c = pednav::navmath::strapdown_config(p);
         if (c.mag_min_ut > c.mag_max_ut)
             Params::fail("mag_min_ut", "is " + format_number(c.mag_min_ut) + " uT, above mag_max_ut (" +
                                            format_number(c.mag_max_ut) + " uT): no field would be trusted");

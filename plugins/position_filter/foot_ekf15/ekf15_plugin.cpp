@@ -164,41 +164,7 @@ private:
         emit(r);
     }
 
-    static pednav::zupt_ins::FootInsConfig read(Params& p) {
-        pednav::zupt_ins::FootInsConfig c;
-        c.zupt = p.boolean("zupt");
-        c.zaru = p.boolean("zaru");
-        c.hupt = p.boolean("hupt");
-        c.gravity_mps2 = p.number("gravity_mps2");
-        c.accel_rescale_above = p.number("accel_rescale_above");
-        c.local_gravity_mps2 = p.number("local_gravity_mps2");
-        c.gyro_noise_radps_per_sqrthz = p.number("gyro_noise_radps_per_sqrthz");
-        c.accel_noise_mps2_per_sqrthz = p.number("accel_noise_mps2_per_sqrthz");
-        c.gyro_bias_walk_radps_per_sqrts = p.number("gyro_bias_walk_radps_per_sqrts");
-        c.accel_bias_walk_mps2_per_sqrts = p.number("accel_bias_walk_mps2_per_sqrts");
-        c.init_roll_pitch_sd_rad = p.number("init_roll_pitch_sd_rad");
-        c.init_heading_sd_rad = p.number("init_heading_sd_rad");
-        c.init_gyro_bias_sd_radps = p.number("init_gyro_bias_sd_radps");
-        c.init_accel_bias_sd_mps2 = p.number("init_accel_bias_sd_mps2");
-        c.init_velocity_sd_mps = p.number("init_velocity_sd_mps");
-        c.zupt_sd_mps = p.number("zupt_sd_mps");
-        c.zaru_sd_radps = p.number("zaru_sd_radps");
-        c.zaru_max_radps = p.number("zaru_max_radps");
-        c.zaru_moves_position = p.boolean("zaru_moves_position");
-        c.zupt_lever_m = p.number("zupt_lever_m");
-        c.sensor_height_m = p.number("sensor_height_m");
-        c.hupt_sd_m = p.number("hupt_sd_m");
-        c.level_match_m = p.number("level_match_m");
-        c.min_stance_s = p.number("min_stance_s");
-        c.min_swing_s = p.number("min_swing_s");
-        c.min_stride_m = p.number("min_stride_m");
-        c.heel_strike_deg = p.number("heel_strike_deg");
-        c.max_dt_s = p.number("max_dt_s");
-        c.filter_rate_hz = p.number("filter_rate_hz");
-        c.swing_propagation_s = p.number("swing_propagation_s");
-        c.joseph_form = p.boolean("joseph_form");
-        return c;
-    }
+    static pednav::zupt_ins::FootInsConfig read(Params& p) { return pednav::zupt_ins::foot_ins_config(p); }
 
     Ins ins_;
     pednav::zupt_ins::SampleOut out_;

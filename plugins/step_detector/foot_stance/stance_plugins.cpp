@@ -15,15 +15,6 @@ using pednav::zupt_ins::StanceDetector;
 // is larger, so the windows hold at any rate up to it.
 double capacity_rate(const CreateContext& ctx) { return std::max(2.0 * ctx.imu_rate_hz, 1000.0); }
 
-// The window parameters both detectors share (each declares its defaults).
-void read_windows(Params& p, pednav::zupt_ins::StanceWindows& w) {
-    w.window_s = p.number("window_s");
-    w.median_window_s = p.number("median_window_s");
-    w.adaptive_window_s = p.number("adaptive_window_s");
-    w.adaptive_ratio = p.number("adaptive_ratio");
-    w.adaptive_max = p.number("adaptive_max");
-}
-
 class StanceBase : public StepDetector {
 public:
     static constexpr uint64_t kConsumes = PN_REC_MASK(PN_REC_IMU);
@@ -84,12 +75,7 @@ public:
 })json";
 
     MultiConditionStance(Params& p, const CreateContext& ctx) {
-        pednav::zupt_ins::MultiConditionConfig c;
-        c.accel_min_mps2 = p.number("accel_min_mps2");
-        c.accel_max_mps2 = p.number("accel_max_mps2");
-        c.accel_std_max_mps2 = p.number("accel_std_max_mps2");
-        c.gyro_max_radps = p.number("gyro_max_radps");
-        read_windows(p, c);
+        const pednav::zupt_ins::MultiConditionConfig c = pednav::zupt_ins::multicondition_config(p);
         if (c.accel_min_mps2 >= c.accel_max_mps2)
             Params::fail("accel_max_mps2", "must be greater than accel_min_mps2");
         detector_ = std::make_unique<StanceDetector>(c, capacity_rate(ctx));
@@ -131,12 +117,7 @@ public:
 })json";
 
     ShoeStance(Params& p, const CreateContext& ctx) {
-        pednav::zupt_ins::ShoeConfig c;
-        c.accel_sd_mps2 = p.number("accel_sd_mps2");
-        c.gyro_sd_radps = p.number("gyro_sd_radps");
-        c.threshold = p.number("threshold");
-        c.gravity_mps2 = p.number("gravity_mps2");
-        read_windows(p, c);
+        const pednav::zupt_ins::ShoeConfig c = pednav::zupt_ins::shoe_config(p);
         detector_ = std::make_unique<StanceDetector>(c, capacity_rate(ctx));
     }
 };

@@ -9,13 +9,22 @@
 #include <pednav_navmath/strapdown.hpp>
 
 #include "../test_attitude.hpp"
+#include "../plugin_defaults.hpp"
 
 using namespace pednav::navmath;
 using pednav::test::attitude;
 using pednav::test::kDeg;
 
+namespace {
+// The strapdown plugin's defaults, from its parameter schema.
+StrapdownConfig defaults() {
+    pednav::test::PluginDefaults d("libpnp_foot_strapdown.so", "org.pednav.foot.strapdown");
+    return strapdown_config(d);
+}
+}  // namespace
+
 TEST_CASE("strapdown aligns on the still period and takes the heading from a trusted magnetometer") {
-    StrapdownConfig c;
+    StrapdownConfig c = defaults();
     c.declination_deg = 2.0;
     Strapdown sd(c);
     const Mat3 R = attitude(70 * kDeg, 15 * kDeg, -40 * kDeg);
@@ -33,7 +42,7 @@ TEST_CASE("strapdown aligns on the still period and takes the heading from a tru
     CHECK(std::abs(wrap_pi(heading_of(sd.q()) - (70 + 2) * kDeg)) < 1e-6);
     CHECK((sd.gyro_bias() - bias).norm() < 1e-12);
     // Field strength outside the trusted band: heading from the parameter.
-    StrapdownConfig c2;
+    StrapdownConfig c2 = defaults();
     c2.initial_heading_deg = -30.0;
     Strapdown sd2(c2);
     aligned = false;
@@ -62,7 +71,7 @@ TEST_CASE("attitude integration with mid-interval rates and coning is exact for 
         const Quat d0 = q_true(t - h).conjugate() * q_true(t);
         return Vec3((quat_log(d) + quat_log(d0)) / (2 * h));
     };
-    StrapdownConfig c;
+    const StrapdownConfig c = defaults();
     Strapdown sd(c);
     sd.set_attitude(q_true(0.0));
     const Vec3 f(0, 0, 9.81);

@@ -8,10 +8,19 @@
 
 #include <pednav_zupt_ins/foot_ins.hpp>
 
+#include "../plugin_defaults.hpp"
 #include "../test_attitude.hpp"
 
 using namespace pednav::zupt_ins;
 using pednav::test::attitude;
+
+namespace {
+// The foot EKF plugin's defaults, from its parameter schema.
+FootInsConfig foot_ins_defaults() {
+    pednav::test::PluginDefaults d("libpnp_foot_ekf.so", "org.pednav.foot.ekf15");
+    return foot_ins_config(d);
+}
+}  // namespace
 
 TEST_CASE("ZUPT on a rolling foot expects the sensor's velocity about the contact point") {
     // The sensor sits tilted and yawed on the foot (R = ENU from body). The
@@ -25,7 +34,7 @@ TEST_CASE("ZUPT on a rolling foot expects the sensor's velocity about the contac
     const Vec3 w_enu(0.0, 2.0, 0.0), g_enu(0.0, 0.0, 9.80665), push_enu(2.0, 1.0, 0.0);
     const Vec3 w_body = R.transpose() * w_enu;
     for (double height : {0.0, 0.08}) {
-        FootInsConfig c;
+        FootInsConfig c = foot_ins_defaults();
         c.sensor_height_m = height;
         c.zupt_lever_m = 0.0;
         c.zaru = false;
@@ -82,7 +91,7 @@ std::vector<double> stride_lengths_m(const FootInsConfig& c, double accel_scale,
 }  // namespace
 
 TEST_CASE("accelerometer rescale: a sensor that reads off gravity at rest gets its strides back when asked") {
-    FootInsConfig c;
+    FootInsConfig c = foot_ins_defaults();
     c.hupt = false;
     const auto check_strides = [](const std::vector<double>& s, double expect_m) {
         REQUIRE(s.size() == 2);

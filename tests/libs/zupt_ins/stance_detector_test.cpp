@@ -11,10 +11,21 @@
 #include <pednav_navmath/so3.hpp>
 #include <pednav_zupt_ins/stance_detector.hpp>
 
+#include "../plugin_defaults.hpp"
+
 using namespace pednav::zupt_ins;
 using pednav::navmath::Vec3;
 
 namespace {
+// The stance plugins' defaults, from their parameter schemas.
+MultiConditionConfig multicondition_defaults() {
+    pednav::test::PluginDefaults d("libpnp_foot_stance.so", "org.pednav.foot.stance.multicondition");
+    return multicondition_config(d);
+}
+ShoeConfig shoe_defaults() {
+    pednav::test::PluginDefaults d("libpnp_foot_stance.so", "org.pednav.foot.stance.shoe");
+    return shoe_config(d);
+}
 struct Synthetic {
     std::vector<int64_t> t_ns;
     std::vector<Vec3> a, w;
@@ -102,7 +113,7 @@ TEST_CASE("stance detectors give the same decisions at 100, 200, 250 and 400 Hz 
     for (double rate : {100.0, 200.0, 250.0, 400.0}) {
         CAPTURE(rate);
         const Synthetic walk = gait(rate, 0.35, 0.65, 0.97 * 9.80665, 12, 0.3, 1.0, 7);
-        MultiConditionConfig mc;
+        MultiConditionConfig mc = multicondition_defaults();
         StanceDetector multi(mc, 1000.0);
         const DetectionScore a = detect(multi, walk);
         CHECK(a.outputs == walk.t_ns.size());
@@ -111,7 +122,7 @@ TEST_CASE("stance detectors give the same decisions at 100, 200, 250 and 400 Hz 
         CHECK(truth == 13);  // the opening still period runs into the first stance
         CHECK(a.segments == truth);
         CHECK(a.agreement > 0.9);
-        ShoeConfig sc;
+        ShoeConfig sc = shoe_defaults();
         StanceDetector shoe(sc, 1000.0);
         const DetectionScore b = detect(shoe, walk);
         CHECK(b.outputs == walk.t_ns.size());
@@ -126,14 +137,14 @@ TEST_CASE("running: the adaptive SHOE detector finds every brief, rolling stance
         CAPTURE(rate);
         // 0.12 s stances with a 1.2 rad/s heel-to-toe roll, violent swings.
         const Synthetic run = gait(rate, 0.12, 0.55, 9.80665, 15, 1.2, 2.5, 11);
-        ShoeConfig sc;
+        ShoeConfig sc = shoe_defaults();
         StanceDetector shoe(sc, 1000.0);
         const DetectionScore b = detect(shoe, run);
         CHECK(b.latency_kept);
         const int truth = segments_of(run.stance);
         CHECK(b.segments == truth);
         // The paper's detector with its printed thresholds misses them (|w| > 1 rad/s).
-        MultiConditionConfig mc;
+        MultiConditionConfig mc = multicondition_defaults();
         StanceDetector multi(mc, 1000.0);
         CHECK(detect(multi, run).segments < truth);
     }
@@ -146,10 +157,10 @@ TEST_CASE("SHOE statistic equals the direct sum over its window, with g given an
     const double g_read = 0.97 * 9.80665;
     const Synthetic walk = gait(200.0, 0.35, 0.65, g_read, 6, 0.3, 1.0, 5);
     double mean_still_given = 0, mean_still_own = 0;
-    const ShoeConfig sc_default;
+    const ShoeConfig sc_default = shoe_defaults();
     for (double g : {0.0, 9.80665, 9.5}) {
         CAPTURE(g);
-        ShoeConfig sc;
+        ShoeConfig sc = shoe_defaults();
         sc.adaptive_window_s = 0.0;
         sc.gravity_mps2 = g;
         StanceDetector shoe(sc, 1000.0);
@@ -200,7 +211,7 @@ TEST_CASE("SHOE statistic equals the direct sum over its window, with g given an
 }
 
 TEST_CASE("stance detector windows are in seconds: latency does not depend on the rate") {
-    MultiConditionConfig mc;
+    MultiConditionConfig mc = multicondition_defaults();
     mc.window_s = 0.2;
     mc.median_window_s = 0.1;
     mc.adaptive_window_s = 0.0;
@@ -210,7 +221,7 @@ TEST_CASE("stance detector windows are in seconds: latency does not depend on th
     mc.adaptive_window_s = 1.0;
     StanceDetector c(mc, 250.0);
     CHECK(c.latency_ns() == 650000000);
-    ShoeConfig sc;
+    ShoeConfig sc = shoe_defaults();
     StanceDetector s(sc, 250.0);
     CHECK(s.latency_ns() == static_cast<int64_t>(std::llround((sc.window_s + sc.adaptive_window_s + sc.median_window_s) * 0.5e9)));
 }

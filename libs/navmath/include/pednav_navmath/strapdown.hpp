@@ -23,26 +23,52 @@
 
 namespace pednav::navmath {
 
+// No defaults here: the strapdown plugin's parameter schema holds them, with
+// their ranges (pednav plugins --params); strapdown_config() fills every field.
 struct StrapdownConfig {
-    double align_still_s = 1.0;           // still time that triggers the alignment
-    double align_min_still_s = 0.3;       // shortest still period accepted when motion starts
-    double align_timeout_s = 10.0;        // align on the current sample after this long without a still period
-    double align_gyro_max_radps = 0.35;   // still: |w| below this
-    double align_accel_dev_mps2 = 0.6;    // still: |a - mean a| below this
-    bool use_magnetometer = true;
-    double mag_min_ut = 15.0;             // field strengths outside [min, max] are not trusted
-    double mag_max_ut = 100.0;
-    double declination_deg = 0.0;         // east positive: true = magnetic + declination
-    double initial_heading_deg = 0.0;     // when no trusted magnetometer; clockwise from north
-    bool gyro_bias_from_still = true;     // initial gyro bias = mean rate of the still period...
-    double bias_still_max_sd_radps = 0.01;  // ...when the rate's sd over it is below this (truly still)
-    bool coning = true;                   // second-order coning term
-    double max_dt_s = 0.1;                // longer gaps are integrated as this
+    double align_still_s;           // still time that triggers the alignment
+    double align_min_still_s;       // shortest still period accepted when motion starts
+    double align_timeout_s;        // align on the current sample after this long without a still period
+    double align_gyro_max_radps;   // still: |w| below this
+    double align_accel_dev_mps2;    // still: |a - mean a| below this
+    bool use_magnetometer;
+    double mag_min_ut;             // field strengths outside [min, max] are not trusted
+    double mag_max_ut;
+    double declination_deg;         // east positive: true = magnetic + declination
+    double initial_heading_deg;     // when no trusted magnetometer; clockwise from north
+    bool gyro_bias_from_still;     // initial gyro bias = mean rate of the still period...
+    double bias_still_max_sd_radps;  // ...when the rate's sd over it is below this (truly still)
+    bool coning;                   // second-order coning term
+    double max_dt_s;                // longer gaps are integrated as this
     // Gyro full-scale range; samples at or above 99.5 % of it are clipped and
     // the missing rotation of each clipped run is restored at its end from a
     // parabola through the run with the entry and exit slopes. 0 = off.
-    double gyro_range_radps = 0.0;
+    double gyro_range_radps;
 };
+
+// The config from named values: `v.number(key)` and `v.boolean(key)` for each
+// field, by its name (a plugin's SDK Params, whose schema gives defaults and
+// ranges; a test's values read from that schema).
+template <class Values>
+StrapdownConfig strapdown_config(Values& v) {
+    StrapdownConfig c;
+    c.align_still_s = v.number("align_still_s");
+    c.align_min_still_s = v.number("align_min_still_s");
+    c.align_timeout_s = v.number("align_timeout_s");
+    c.align_gyro_max_radps = v.number("align_gyro_max_radps");
+    c.align_accel_dev_mps2 = v.number("align_accel_dev_mps2");
+    c.use_magnetometer = v.boolean("use_magnetometer");
+    c.mag_min_ut = v.number("mag_min_ut");
+    c.mag_max_ut = v.number("mag_max_ut");
+    c.declination_deg = v.number("declination_deg");
+    c.initial_heading_deg = v.number("initial_heading_deg");
+    c.gyro_bias_from_still = v.boolean("gyro_bias_from_still");
+    c.bias_still_max_sd_radps = v.number("bias_still_max_sd_radps");
+    c.coning = v.boolean("coning");
+    c.max_dt_s = v.number("max_dt_s");
+    c.gyro_range_radps = v.number("gyro_range_radps");
+    return c;
+}
 
 class Strapdown {
 public:

@@ -29,13 +29,15 @@
 
 namespace pednav::zupt_ins {
 
+// No defaults here: the foot EKF plugins' parameter schema holds them, with
+// their ranges (pednav plugins --params); foot_ins_config() fills every field.
 struct FootInsConfig {
-    bool zupt = true;
-    bool zaru = true;
-    bool hupt = true;
+    bool zupt;
+    bool zaru;
+    bool hupt;
     // Gravity subtracted in the mechanization; 0 = mean |a| over the first
     // stance (the vertical then holds for a sensor that reads off at rest).
-    double gravity_mps2 = 0.0;
+    double gravity_mps2;
     // With gravity learned (gravity_mps2 0) and |a| at rest off
     // local_gravity_mps2 by more than this fraction, the accelerometer is
     // taken to have a scale error and rescaled to read local_gravity_mps2 at
@@ -45,50 +47,90 @@ struct FootInsConfig {
     // the same as a scale error, and rescaling a biased sensor makes its
     // strides wrong instead: 1 = never rescale (the preset), 0.02 = sensors
     // more than 2 % off (local gravity itself varies by 0.5 % over the Earth).
-    double accel_rescale_above = 1.0;
-    double local_gravity_mps2 = 9.80665;
+    double accel_rescale_above;
+    double local_gravity_mps2;
     // Process noise densities.
-    double gyro_noise_radps_per_sqrthz = 0.002;
-    double accel_noise_mps2_per_sqrthz = 0.2;
-    double gyro_bias_walk_radps_per_sqrts = 1e-5;
-    double accel_bias_walk_mps2_per_sqrts = 1e-3;
+    double gyro_noise_radps_per_sqrthz;
+    double accel_noise_mps2_per_sqrthz;
+    double gyro_bias_walk_radps_per_sqrts;
+    double accel_bias_walk_mps2_per_sqrts;
     // Initial standard deviations.
-    double init_roll_pitch_sd_rad = 0.02;
-    double init_heading_sd_rad = 0.0;
-    double init_gyro_bias_sd_radps = 0.001;
-    double init_accel_bias_sd_mps2 = 0.1;
-    double init_velocity_sd_mps = 0.01;
+    double init_roll_pitch_sd_rad;
+    double init_heading_sd_rad;
+    double init_gyro_bias_sd_radps;
+    double init_accel_bias_sd_mps2;
+    double init_velocity_sd_mps;
     // Measurement standard deviations.
-    double zupt_sd_mps = 0.01;
-    double zaru_sd_radps = 0.02;
-    double zaru_max_radps = 0.1;      // ZARU only while |w - bg| is below this (a rolling foot is not still)
+    double zupt_sd_mps;
+    double zaru_sd_radps;
+    double zaru_max_radps;      // ZARU only while |w - bg| is below this (a rolling foot is not still)
     // ZARU also corrects the position (through its correlation with the gyro
     // bias); false = a consider update that holds the position estimate.
-    bool zaru_moves_position = true;
-    double zupt_lever_m = 0.3;        // ZUPT sd grows by this times |w - bg| (sensor ahead of the pivot)
+    bool zaru_moves_position;
+    double zupt_lever_m;        // ZUPT sd grows by this times |w - bg| (sensor ahead of the pivot)
     // Height of the sensor above the sole: a stance foot rolling about its
     // contact point moves the sensor horizontally at (w x up) times this, and
     // the ZUPT expects that velocity instead of zero (0 = a plain ZUPT).
-    double sensor_height_m = 0.05;
-    double hupt_sd_m = 0.01;
-    double level_match_m = 0.1;       // a level reached after stairs within this of one stood on before is that level
+    double sensor_height_m;
+    double hupt_sd_m;
+    double level_match_m;       // a level reached after stairs within this of one stood on before is that level
     // Stride segmentation and level/stairs classification.
-    double min_stance_s = 0.0;        // shorter stances do not end a stride
-    double min_swing_s = 0.15;        // motion between counted stances
-    double min_stride_m = 0.2;        // horizontal displacement between counted stances
-    double heel_strike_deg = 12.0;    // toe-up pitch in the swing that marks a level step
-    double max_dt_s = 0.1;
+    double min_stance_s;        // shorter stances do not end a stride
+    double min_swing_s;        // motion between counted stances
+    double min_stride_m;        // horizontal displacement between counted stances
+    double heel_strike_deg;    // toe-up pitch in the swing that marks a level step
+    double max_dt_s;
     // The covariance propagation and the stance updates run at most at this
     // rate (the mechanization runs at every sample); 0 = at every sample.
-    double filter_rate_hz = 0.0;
+    double filter_rate_hz;
     // In the swing (no measurements) the covariance transitions are multiplied
     // together and P is propagated once per this interval (Ekf15::defer_propagation),
     // and at the first filter step in stance (the first stance sample when
     // filter_rate_hz is 0); 0 = at every filter step. The per-sample position
     // covariance then holds during that interval.
-    double swing_propagation_s = 0.1;
-    bool joseph_form = true;  // covariance update in Joseph form (else P - K H P)
+    double swing_propagation_s;
+    bool joseph_form;  // covariance update in Joseph form (else P - K H P)
 };
+
+// The config from named values: `v.number(key)` and `v.boolean(key)` for each
+// field, by its name (a plugin's SDK Params, whose schema gives defaults and
+// ranges; a test's values read from that schema).
+template <class Values>
+FootInsConfig foot_ins_config(Values& v) {
+    FootInsConfig c;
+    c.zupt = v.boolean("zupt");
+    c.zaru = v.boolean("zaru");
+    c.hupt = v.boolean("hupt");
+    c.gravity_mps2 = v.number("gravity_mps2");
+    c.accel_rescale_above = v.number("accel_rescale_above");
+    c.local_gravity_mps2 = v.number("local_gravity_mps2");
+    c.gyro_noise_radps_per_sqrthz = v.number("gyro_noise_radps_per_sqrthz");
+    c.accel_noise_mps2_per_sqrthz = v.number("accel_noise_mps2_per_sqrthz");
+    c.gyro_bias_walk_radps_per_sqrts = v.number("gyro_bias_walk_radps_per_sqrts");
+    c.accel_bias_walk_mps2_per_sqrts = v.number("accel_bias_walk_mps2_per_sqrts");
+    c.init_roll_pitch_sd_rad = v.number("init_roll_pitch_sd_rad");
+    c.init_heading_sd_rad = v.number("init_heading_sd_rad");
+    c.init_gyro_bias_sd_radps = v.number("init_gyro_bias_sd_radps");
+    c.init_accel_bias_sd_mps2 = v.number("init_accel_bias_sd_mps2");
+    c.init_velocity_sd_mps = v.number("init_velocity_sd_mps");
+    c.zupt_sd_mps = v.number("zupt_sd_mps");
+    c.zaru_sd_radps = v.number("zaru_sd_radps");
+    c.zaru_max_radps = v.number("zaru_max_radps");
+    c.zaru_moves_position = v.boolean("zaru_moves_position");
+    c.zupt_lever_m = v.number("zupt_lever_m");
+    c.sensor_height_m = v.number("sensor_height_m");
+    c.hupt_sd_m = v.number("hupt_sd_m");
+    c.level_match_m = v.number("level_match_m");
+    c.min_stance_s = v.number("min_stance_s");
+    c.min_swing_s = v.number("min_swing_s");
+    c.min_stride_m = v.number("min_stride_m");
+    c.heel_strike_deg = v.number("heel_strike_deg");
+    c.max_dt_s = v.number("max_dt_s");
+    c.filter_rate_hz = v.number("filter_rate_hz");
+    c.swing_propagation_s = v.number("swing_propagation_s");
+    c.joseph_form = v.boolean("joseph_form");
+    return c;
+}
 
 struct StrideOut {
     int64_t t_start_ns;

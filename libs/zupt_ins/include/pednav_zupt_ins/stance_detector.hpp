@@ -53,15 +53,13 @@ struct StanceWindows {
 };
 
 struct MultiConditionConfig : StanceWindows {
-    double accel_min_mps2 = 9.0;        // C1 lower bound on |a|, eq. (17)
-    double accel_max_mps2 = 11.0;       // C1 upper bound on |a|
-    double accel_std_max_mps2 = 0.5;    // C2: std of |a| over the window below this, eq. (20)
-    double gyro_max_radps = 1.0;        // C3: |w| below this, eq. (22)
-    // Window of eq. (18)-(19) 0.15 s (paper: 31 samples at 100 Hz), majority
-    // filter 0.11 s (paper: 11 samples at 100 Hz). The adaptive threshold is
-    // off (the paper's fixed conditions only); when on, it works as for SHOE
-    // on the statistic max(std|a| / accel_std_max, |w| / gyro_max).
-    MultiConditionConfig() : StanceWindows{0.15, 0.11, 0.0, 2.0, 4.0} {}
+    double accel_min_mps2;        // C1 lower bound on |a|, eq. (17)
+    double accel_max_mps2;       // C1 upper bound on |a|
+    double accel_std_max_mps2;    // C2: std of |a| over the window below this, eq. (20)
+    double gyro_max_radps;        // C3: |w| below this, eq. (22)
+    // The paper's window of eq. (18)-(19) is 31 samples at 100 Hz, its
+    // majority filter 11. When the adaptive threshold is on, it works as for
+    // SHOE on the statistic max(std|a| / accel_std_max, |w| / gyro_max).
 };
 
 // SHOE / GLRT detector (Skog, Handel, Nilsson, Rantakokko 2010, eq. (10)):
@@ -76,13 +74,44 @@ struct MultiConditionConfig : StanceWindows {
 // centred window of adaptive_window_s (longer than one gait cycle) and below
 // adaptive_max; the running minimum is a monotone deque, O(1) amortised.
 struct ShoeConfig : StanceWindows {
-    double accel_sd_mps2 = 1.0;      // sigma_a
-    double gyro_sd_radps = 0.5;      // sigma_w
-    double threshold = 0.5;          // gamma (dimensionless, W-normalised)
-    double gravity_mps2 = 0.0;       // g; 0 = the window's |mean a|
-    // W = 0.06 s, majority filter 0.05 s, adaptive threshold over 1 s.
-    ShoeConfig() : StanceWindows{0.06, 0.05, 1.0, 3.0, 60.0} {}
+    double accel_sd_mps2;      // sigma_a
+    double gyro_sd_radps;      // sigma_w
+    double threshold;          // gamma (dimensionless, W-normalised)
+    double gravity_mps2;       // g; 0 = the window's |mean a|
 };
+
+// No defaults in these configs: the stance plugins' parameter schemas hold
+// them, with their ranges (pednav plugins --params). The configs from named
+// values: `v.number(key)` for each field, by its name (a plugin's SDK Params;
+// a test's values read from the schema).
+template <class Values>
+void read_stance_windows(Values& v, StanceWindows& w) {
+    w.window_s = v.number("window_s");
+    w.median_window_s = v.number("median_window_s");
+    w.adaptive_window_s = v.number("adaptive_window_s");
+    w.adaptive_ratio = v.number("adaptive_ratio");
+    w.adaptive_max = v.number("adaptive_max");
+}
+template <class Values>
+MultiConditionConfig multicondition_config(Values& v) {
+    MultiConditionConfig c;
+    c.accel_min_mps2 = v.number("accel_min_mps2");
+    c.accel_max_mps2 = v.number("accel_max_mps2");
+    c.accel_std_max_mps2 = v.number("accel_std_max_mps2");
+    c.gyro_max_radps = v.number("gyro_max_radps");
+    read_stance_windows(v, c);
+    return c;
+}
+template <class Values>
+ShoeConfig shoe_config(Values& v) {
+    ShoeConfig c;
+    c.accel_sd_mps2 = v.number("accel_sd_mps2");
+    c.gyro_sd_radps = v.number("gyro_sd_radps");
+    c.threshold = v.number("threshold");
+    c.gravity_mps2 = v.number("gravity_mps2");
+    read_stance_windows(v, c);
+    return c;
+}
 
 // Ring capacities are sized for max_rate_hz (samples per second the detector
 // can take without shrinking its windows). When the input comes faster, a
