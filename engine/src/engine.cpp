@@ -47,7 +47,7 @@ Role role_for_kind(pnp_kind_t kind) {
 std::string available_ids(const Loader& loader, Role role) {
     std::string list;
     for (const auto& p : loader.plugins())
-        if (role_for_kind(p.descriptor->kind) == role) list += (list.empty() ? "" : ", ") + std::string(p.descriptor->id);
+        if (role_for_kind(p.kind) == role) list += (list.empty() ? "" : ", ") + p.id;
     return list.empty() ? "none" : list;
 }
 
@@ -57,16 +57,21 @@ Engine::Engine(const pn_engine_create_info_t& info) : loader_(std::make_unique<L
     for (auto& t : last_t_ns_) t = INT64_MIN;
     log_ = info.log;
     log_user_ = info.log_user;
+    const std::string text = info.config_len ? std::string(info.config_json, info.config_len)
+                                             : std::string(info.config_json ? info.config_json : "");
+    config_ = parse_config(text);
+
+    // Manifests first; then only the libraries of the configured plugin ids are opened.
     for (uint32_t i = 0; i < info.plugin_dir_count; ++i)
         if (info.plugin_dirs && info.plugin_dirs[i]) loader_->scan_directory(info.plugin_dirs[i]);
     for (uint32_t i = 0; i < info.static_library_count; ++i)
         if (info.static_libraries) loader_->add_static_library(info.static_libraries[i], "<static:" + std::to_string(i) + ">");
+    std::vector<std::string> wanted_ids;
+    for (const StageConfig& sc : config_.stages) wanted_ids.push_back(sc.plugin_id);
+    loader_->open_for(wanted_ids);
     for (const auto& r : loader_->rejected())
         log(PNP_LOG_WARN, "engine", ("rejected plugin file " + r.path + ": " + r.reason).c_str());
-
-    const std::string text = info.config_len ? std::string(info.config_json, info.config_len)
-                                             : std::string(info.config_json ? info.config_json : "");
-    config_ = parse_config(text);
+    for (const auto& w : loader_->warnings()) log(PNP_LOG_WARN, "engine", (w.path + ": " + w.message).c_str());
 
     std::vector<std::unique_ptr<Stage>> stages;
     struct Destroyer {  // destroys instances created so far if a later one fails
