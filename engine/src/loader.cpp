@@ -144,7 +144,7 @@ void Loader::scan_directory(const std::string& dir) {
         add_found_file(dir, name);
     }
     for (const auto& m : manifests)
-        warnings_.push_back({dir + "/" + m, "manifest without its library " + m.substr(0, m.size() - 5) +
+        warnings_.push_back({real_path(dir + "/" + m), "manifest without its library " + m.substr(0, m.size() - 5) +
                                                 ".so beside it: ignored"});
 }
 
@@ -154,7 +154,7 @@ void Loader::add_found_file(const std::string& dir, const std::string& name) {
         if (l.path == path) return;  // the same file reached through two directories
     LibraryFile file;
     file.path = path;
-    const std::string manifest = manifest_path_for(dir + "/" + name);
+    const std::string manifest = real_path(manifest_path_for(dir + "/" + name));
     if (!is_file(manifest)) {
         warnings_.push_back({path, "no manifest " + manifest_path_for(name) + " beside it" + kNoManifest});
     } else {
