@@ -16,10 +16,11 @@ using pednav::engine::set_error;
 
 extern "C" {
 
-pn_status_t pn_plugins_describe(const char* const* plugin_dirs, uint32_t dir_count, uint32_t flags, char* buffer,
-                                size_t capacity, size_t* size, pn_error_t* err) {
+pn_status_t pn_plugins_describe(const char* const* plugin_dirs, uint32_t dir_count, uint32_t flags,
+                                char* buffer, size_t capacity, size_t* size, pn_error_t* err) {
     if (dir_count && !plugin_dirs) {
-        set_error(err, PN_E_INVALID_ARGUMENT, "plugin_dirs", "plugin_dirs is NULL but dir_count is " + std::to_string(dir_count));
+        set_error(err, PN_E_INVALID_ARGUMENT, "plugin_dirs",
+                  "plugin_dirs is NULL but dir_count is " + std::to_string(dir_count));
         return PN_E_INVALID_ARGUMENT;
     }
     if (flags & ~PN_LIST_OPEN_LIBRARIES) {

@@ -60,8 +60,8 @@ std::string other_major_entry(void* handle) {
 std::string check_library(const pnp_library_t* lib) {
     if (!lib) return "entry function returned NULL";
     if (PN_ABI_VERSION_MAJOR(lib->abi_version) != PN_ABI_MAJOR)
-        return "library ABI major " + std::to_string(PN_ABI_VERSION_MAJOR(lib->abi_version)) + ", this engine speaks " +
-               std::to_string(PN_ABI_MAJOR);
+        return "library ABI major " + std::to_string(PN_ABI_VERSION_MAJOR(lib->abi_version)) +
+               ", this engine speaks " + std::to_string(PN_ABI_MAJOR);
     if (lib->struct_size < PNP_LIBRARY_MIN_SIZE)
         return "library struct_size " + std::to_string(lib->struct_size) + " is below the minimum " +
                std::to_string(PNP_LIBRARY_MIN_SIZE);
@@ -126,7 +126,8 @@ std::string Loader::rejection_for(const std::string& id) const {
 void Loader::scan_directory(const std::string& dir) {
     DIR* d = opendir(dir.c_str());
     if (!d) {
-        reject(dir, PN_E_NOT_FOUND, std::string("plugin directory cannot be opened: ") + std::strerror(errno));
+        reject(dir, PN_E_NOT_FOUND,
+               std::string("plugin directory cannot be opened: ") + std::strerror(errno));
         return;
     }
     std::vector<std::string> libraries;
@@ -134,8 +135,10 @@ void Loader::scan_directory(const std::string& dir) {
     while (dirent* e = readdir(d)) {
         const std::string name = e->d_name;
         if (!starts_with(name, "libpnp_")) continue;
-        if (ends_with(name, ".so")) libraries.push_back(name);
-        else if (ends_with(name, ".json")) manifests.insert(name);
+        if (ends_with(name, ".so"))
+            libraries.push_back(name);
+        else if (ends_with(name, ".json"))
+            manifests.insert(name);
     }
     closedir(d);
     std::sort(libraries.begin(), libraries.end());
@@ -144,8 +147,9 @@ void Loader::scan_directory(const std::string& dir) {
         add_found_file(dir, name);
     }
     for (const auto& m : manifests)
-        warnings_.push_back({real_path(dir + "/" + m), "manifest without its library " + m.substr(0, m.size() - 5) +
-                                                ".so beside it: ignored"});
+        warnings_.push_back(
+            {real_path(dir + "/" + m),
+             "manifest without its library " + m.substr(0, m.size() - 5) + ".so beside it: ignored"});
 }
 
 void Loader::add_found_file(const std::string& dir, const std::string& name) {
@@ -161,11 +165,13 @@ void Loader::add_found_file(const std::string& dir, const std::string& name) {
         try {
             Manifest m = read_manifest(manifest);
             if (m.file != name)
-                throw ManifestError{PN_E_BAD_INPUT, "manifest " + manifest + " describes " + m.file + ", not " + name};
+                throw ManifestError{PN_E_BAD_INPUT,
+                                    "manifest " + manifest + " describes " + m.file + ", not " + name};
             file.manifest = std::move(m);
         } catch (const ManifestError& e) {
             reject(manifest, e.status, e.message);
-            warnings_.push_back({path, "its manifest " + manifest_path_for(name) + " is refused" + kNoManifest});
+            warnings_.push_back(
+                {path, "its manifest " + manifest_path_for(name) + " is refused" + kNoManifest});
         }
     }
     libraries_.push_back(std::move(file));
@@ -183,7 +189,8 @@ void Loader::list_manifest_plugins(size_t index) {
         const ManifestPlugin& p = m.plugins[k];
         if (const AvailablePlugin* prior = entry_for(p.id)) {
             reject(file.path, PN_E_INVALID_ARGUMENT,
-                   "duplicate plugin id " + p.id + ": already provided by " + libraries_[prior->library_index].path);
+                   "duplicate plugin id " + p.id + ": already provided by " +
+                       libraries_[prior->library_index].path);
             continue;
         }
         plugins_.push_back({p.id, p.kind, index, nullptr, static_cast<int>(k)});
@@ -227,7 +234,8 @@ void Loader::refuse(size_t index, pn_status_t status, const std::string& reason)
     file.refused = true;
     reject(file.path, status, reason);
     if (file.manifest)
-        for (const auto& p : file.manifest->plugins) rejected_ids_.emplace(p.id, reason + " (" + file.path + ")");
+        for (const auto& p : file.manifest->plugins)
+            rejected_ids_.emplace(p.id, reason + " (" + file.path + ")");
     plugins_.erase(std::remove_if(plugins_.begin(), plugins_.end(),
                                   [&](const AvailablePlugin& p) { return p.library_index == index; }),
                    plugins_.end());
@@ -249,15 +257,16 @@ void Loader::open_library(size_t index) {
     if (!sym) {
         const std::string other = other_major_entry(handle);
         if (!other.empty()) {
-            problem = "exports " + other + " (another ABI major) but not " PNP_ENTRY_SYMBOL
-                      "; this engine speaks ABI major " + std::to_string(PN_ABI_MAJOR);
+            problem = "exports " + other +
+                      " (another ABI major) but not " PNP_ENTRY_SYMBOL "; this engine speaks ABI major " +
+                      std::to_string(PN_ABI_MAJOR);
         } else {
             status = PN_E_NOT_FOUND;
             problem = "no entry symbol " PNP_ENTRY_SYMBOL ": not a pednav plugin";
         }
     } else if (dladdr(sym, &info) == 0 || !info.dli_fname || real_path(info.dli_fname) != path) {
-        problem = std::string("entry symbol comes from another object (") + (info.dli_fname ? info.dli_fname : "?") +
-                  "), not from this file";
+        problem = std::string("entry symbol comes from another object (") +
+                  (info.dli_fname ? info.dli_fname : "?") + "), not from this file";
     }
     if (!problem.empty()) {
         dlclose(handle);
@@ -318,7 +327,8 @@ void Loader::add_descriptors(size_t index) {
                        std::string("duplicate plugin id ") + d->id + ": already provided by " +
                            libraries_[entry->library_index].path);
         } else if (entry && entry->descriptor) {
-            reject(file.path, PN_E_INVALID_ARGUMENT, std::string("duplicate plugin id ") + d->id + " within the library");
+            reject(file.path, PN_E_INVALID_ARGUMENT,
+                   std::string("duplicate plugin id ") + d->id + " within the library");
         } else if (entry) {
             entry->descriptor = d;  // listed by the manifest
             ++offered;

@@ -35,9 +35,9 @@ struct LoadWarning {
 
 // A plugin library the loader knows of.
 struct LibraryFile {
-    std::string path;                  // real file path, or "<static:N>"
-    std::optional<Manifest> manifest;  // the manifest beside it, if one was read and accepted
-    void* handle = nullptr;            // dlopen handle once opened; NULL for static libraries
+    std::string path;                        // real file path, or "<static:N>"
+    std::optional<Manifest> manifest;        // the manifest beside it, if one was read and accepted
+    void* handle = nullptr;                  // dlopen handle once opened; NULL for static libraries
     const pnp_library_t* library = nullptr;  // set once opened (static libraries: at once)
     bool refused = false;                    // none of its plugins is offered (see rejected())
     bool init_done = false;                  // init() called; deinit() at unload
@@ -47,9 +47,9 @@ struct LibraryFile {
 struct AvailablePlugin {
     std::string id;
     pnp_kind_t kind;
-    size_t library_index;                           // into Loader::libraries()
-    const pnp_descriptor_t* descriptor = nullptr;   // NULL until its library is opened
-    int manifest_entry = -1;                        // index into the library's manifest plugins, -1 if none
+    size_t library_index;                          // into Loader::libraries()
+    const pnp_descriptor_t* descriptor = nullptr;  // NULL until its library is opened
+    int manifest_entry = -1;                       // index into the library's manifest plugins, -1 if none
 };
 
 class Loader {
@@ -102,7 +102,7 @@ private:
     std::map<std::string, std::string> rejected_ids_;  // id -> reason
 };
 
-const char* kind_name(pnp_kind_t kind);            // "step_detector", ... or "unknown"
+const char* kind_name(pnp_kind_t kind);              // "step_detector", ... or "unknown"
 pnp_kind_t kind_from_name(const std::string& name);  // 0 for an unknown name
 
 }  // namespace pednav::engine

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "manifest.hpp"
 
+#include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <set>
@@ -31,7 +32,8 @@ std::string string_member(const nlohmann::json& obj, const char* key, const std:
                           const std::string& at, bool non_empty = false) {
     const nlohmann::json& v = member(obj, key, path, at);
     if (!v.is_string()) malformed(path, at + "/" + key, "must be a string");
-    if (non_empty && v.get_ref<const std::string&>().empty()) malformed(path, at + "/" + key, "must not be empty");
+    if (non_empty && v.get_ref<const std::string&>().empty())
+        malformed(path, at + "/" + key, "must not be empty");
     return v.get<std::string>();
 }
 
@@ -68,12 +70,14 @@ ManifestPlugin parse_plugin(const nlohmann::json& p, const std::string& path, co
     mp.kind = kind_from_name(kind);
     if (mp.kind == 0)
         malformed(path, at + "/kind",
-                  "\"" + kind + "\" is not a plugin kind (step_detector, attitude_estimator, position_filter, "
-                  "map_matcher)");
+                  "\"" + kind +
+                      "\" is not a plugin kind (step_detector, attitude_estimator, position_filter, "
+                      "map_matcher)");
     for (const char* key : {"name", "version", "vendor", "description"}) string_member(p, key, path, at);
     const nlohmann::json& kv = member(p, "kind_version", path, at);
     if (!kv.is_number_unsigned()) malformed(path, at + "/kind_version", "must be an unsigned integer");
-    for (const char* key : {"mounts", "features", "consumes", "produces"}) string_array_member(p, key, path, at);
+    for (const char* key : {"mounts", "features", "consumes", "produces"})
+        string_array_member(p, key, path, at);
     member(p, "params_schema", path, at);  // a JSON Schema, or null
     mp.entry = p;
     mp.entry.erase("library");
@@ -141,10 +145,12 @@ Manifest read_manifest(const std::string& path) {
 
 nlohmann::json manifest_json(const pnp_library_t* library, const std::string& file) {
     nlohmann::json plugins = nlohmann::json::array();
-    for (uint32_t i = 0; i < library->plugin_count; ++i) plugins.push_back(describe_plugin(library->plugins[i]));
+    for (uint32_t i = 0; i < library->plugin_count; ++i)
+        plugins.push_back(describe_plugin(library->plugins[i]));
     return {{"format", kManifestFormat},
             {"file", file},
-            {"library", {{"id", library->id ? library->id : ""}, {"version", library->version ? library->version : ""}}},
+            {"library",
+             {{"id", library->id ? library->id : ""}, {"version", library->version ? library->version : ""}}},
             {"abi_version", std::to_string(PN_ABI_VERSION_MAJOR(library->abi_version)) + "." +
                                 std::to_string(PN_ABI_VERSION_MINOR(library->abi_version))},
             {"plugins", plugins}};
@@ -153,11 +159,12 @@ nlohmann::json manifest_json(const pnp_library_t* library, const std::string& fi
 std::string manifest_disagreement(const Manifest& m, const pnp_library_t* library) {
     std::vector<std::string> diffs;
     const std::string lib_id = library->id ? library->id : "";
-    if (lib_id != m.library_id) diffs.push_back("library id " + m.library_id + " in the manifest, " + lib_id + " in the library");
+    if (lib_id != m.library_id)
+        diffs.push_back("library id " + m.library_id + " in the manifest, " + lib_id + " in the library");
     const uint32_t major = PN_ABI_VERSION_MAJOR(library->abi_version);
     if (major != m.abi_major)
-        diffs.push_back("ABI major " + std::to_string(m.abi_major) + " in the manifest, " + std::to_string(major) +
-                        " in the library");
+        diffs.push_back("ABI major " + std::to_string(m.abi_major) + " in the manifest, " +
+                        std::to_string(major) + " in the library");
     std::set<std::string> in_library;
     for (uint32_t i = 0; i < library->plugin_count; ++i) {
         const pnp_descriptor_t* d = library->plugins ? library->plugins[i] : nullptr;
@@ -168,11 +175,12 @@ std::string manifest_disagreement(const Manifest& m, const pnp_library_t* librar
         if (!listed)
             diffs.push_back(std::string("plugin ") + d->id + " is in the library but not in the manifest");
         else if (listed->kind != d->kind)
-            diffs.push_back(std::string("plugin ") + d->id + " is a " + kind_name(listed->kind) + " in the manifest, a " +
-                            kind_name(d->kind) + " in the library");
+            diffs.push_back(std::string("plugin ") + d->id + " is a " + kind_name(listed->kind) +
+                            " in the manifest, a " + kind_name(d->kind) + " in the library");
     }
     for (const auto& p : m.plugins)
-        if (!in_library.count(p.id)) diffs.push_back("plugin " + p.id + " is in the manifest but not in the library");
+        if (!in_library.count(p.id))
+            diffs.push_back("plugin " + p.id + " is in the manifest but not in the library");
     if (diffs.empty()) return {};
     std::string text = "manifest " + m.path + " disagrees with the library: ";
     for (size_t i = 0; i < diffs.size(); ++i) text += (i ? "; " : "") + diffs[i];

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <pednav/pn_plugin.h>
+#include <nlohmann/json.hpp>
 
 namespace pednav::engine {
 

@@ -6,6 +6,7 @@
 // (docs/loading.md), by default beside the library: libpnp_x.so ->
 // libpnp_x.json. pednav_add_plugin() runs it after every link, so a library
 // the engine would refuse fails the build with the engine's reason.
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>

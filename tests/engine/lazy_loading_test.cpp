@@ -33,7 +33,9 @@ std::string read_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
-void write_text(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write_text(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
 
 // A fresh directory under the build tree holding a copy of lazy_a1 (and, with
 // `manifest`, its manifest), for a test to spoil.
@@ -63,7 +65,7 @@ TEST_CASE("a foot engine over two directories of ten libraries opens exactly the
         REQUIRE_MESSAGE(e.status() == PN_OK, e.error().message);
         for (const auto& name : lazy_names()) {
             CAPTURE(name);
-            CHECK(marked(name) == (used.count(name) == 1));        // its initializer ran
+            CHECK(marked(name) == (used.count(name) == 1));                // its initializer ran
             CHECK(is_loaded(lazy_path(name)) == (used.count(name) == 1));  // and it is still open
         }
         const json d = e.describe();
@@ -85,7 +87,8 @@ TEST_CASE("a foot engine over two directories of ten libraries opens exactly the
     for (const auto& name : used) CHECK_MESSAGE(!is_loaded(lazy_path(name)), name);  // closed with the engine
 }
 
-TEST_CASE("the foot preset over the first-party plugins and the ten fixtures opens only the three foot libraries") {
+TEST_CASE(
+    "the foot preset over the first-party plugins and the ten fixtures opens only the three foot libraries") {
     clear_marks();
     Engine e(read_text(std::string(PEDNAV_CONFIG_DIR) + "/foot.json"),
              {PEDNAV_FIRST_PARTY_PLUGIN_DIR, fixture_dir("lazy_a"), fixture_dir("lazy_b")});
@@ -93,8 +96,10 @@ TEST_CASE("the foot preset over the first-party plugins and the ten fixtures ope
     const json d = e.describe();
     std::set<std::string> opened;
     for (const auto& l : d["libraries"])
-        if (l["opened"].get<bool>()) opened.insert(fs::path(l["path"].get<std::string>()).filename().string());
-    CHECK(opened == std::set<std::string>{"libpnp_foot_stance.so", "libpnp_foot_strapdown.so", "libpnp_foot_ekf.so"});
+        if (l["opened"].get<bool>())
+            opened.insert(fs::path(l["path"].get<std::string>()).filename().string());
+    CHECK(opened ==
+          std::set<std::string>{"libpnp_foot_stance.so", "libpnp_foot_strapdown.so", "libpnp_foot_ekf.so"});
     for (const auto& name : lazy_names()) {
         CAPTURE(name);
         CHECK_FALSE(marked(name));
@@ -123,16 +128,20 @@ TEST_CASE("listing reads the manifests and opens nothing unless asked to") {
     CHECK(listed["plugins"] == opened["plugins"]);
 }
 
-TEST_CASE("a manifest that disagrees with its library: the library is refused when opened, each difference named") {
+TEST_CASE(
+    "a manifest that disagrees with its library: the library is refused when opened, each difference named") {
     struct Spoil {
         const char* what;
         void (*edit)(json&);
         std::vector<std::string> mentions;
     };
     const Spoil spoils[] = {
-        {"a kind changed", [](json& m) { m["plugins"][0]["kind"] = "position_filter"; },
-         {"org.pednav.test.lazy_a1.steps is a position_filter in the manifest, a step_detector in the library"}},
-        {"a plugin missing", [](json& m) { m["plugins"].erase(1); },
+        {"a kind changed",
+         [](json& m) { m["plugins"][0]["kind"] = "position_filter"; },
+         {"org.pednav.test.lazy_a1.steps is a position_filter in the manifest, a step_detector in the "
+          "library"}},
+        {"a plugin missing",
+         [](json& m) { m["plugins"].erase(1); },
          {"org.pednav.test.lazy_a1.attitude is in the library but not in the manifest"}},
         {"a plugin the library lacks",
          [](json& m) {
@@ -141,7 +150,8 @@ TEST_CASE("a manifest that disagrees with its library: the library is refused wh
              m["plugins"].push_back(extra);
          },
          {"org.pednav.test.lazy_a1.extra is in the manifest but not in the library"}},
-        {"the library id", [](json& m) { m["library"]["id"] = "org.example.other"; },
+        {"the library id",
+         [](json& m) { m["library"]["id"] = "org.example.other"; },
          {"library id org.example.other in the manifest, org.pednav.test.lazy_a1 in the library"}},
     };
     for (const auto& spoil : spoils) {
@@ -204,7 +214,8 @@ TEST_CASE("a library without a manifest is found, with a warning naming it, and 
     };
     {
         // Every configured id is in lazy_b's manifests: the library is not opened.
-        Engine e(lazy_config("lazy_b1", "lazy_b2", "lazy_b3"), {dir, fixture_dir("lazy_b")}, 0, {}, log, &lines);
+        Engine e(lazy_config("lazy_b1", "lazy_b2", "lazy_b3"), {dir, fixture_dir("lazy_b")}, 0, {}, log,
+                 &lines);
         REQUIRE_MESSAGE(e.status() == PN_OK, e.error().message);
         const json w = entry_ending(e.describe(), "load_warnings", "/libpnp_lazy_a1.so");
         REQUIRE(!w.is_null());

@@ -19,13 +19,13 @@ inline nlohmann::json list_plugins(const std::vector<std::string>& dirs, uint32_
     std::vector<const char*> ptrs;
     for (const auto& d : dirs) ptrs.push_back(d.c_str());
     size_t size = 0;
-    if (pn_plugins_describe(ptrs.data(), static_cast<uint32_t>(ptrs.size()), flags, nullptr, 0, &size, nullptr) !=
-            PN_E_INVALID_ARGUMENT ||
+    if (pn_plugins_describe(ptrs.data(), static_cast<uint32_t>(ptrs.size()), flags, nullptr, 0, &size,
+                            nullptr) != PN_E_INVALID_ARGUMENT ||
         size == 0)
         return nullptr;
     std::string text(size, '\0');
-    if (pn_plugins_describe(ptrs.data(), static_cast<uint32_t>(ptrs.size()), flags, &text[0], size, &size, nullptr) !=
-        PN_OK)
+    if (pn_plugins_describe(ptrs.data(), static_cast<uint32_t>(ptrs.size()), flags, &text[0], size, &size,
+                            nullptr) != PN_OK)
         return nullptr;
     text.resize(size - 1);
     return nlohmann::json::parse(text);
@@ -47,7 +47,9 @@ inline std::vector<std::string> lazy_names() {
 }
 
 // Set by the initializer of a lazy fixture library when it is opened.
-inline bool marked(const std::string& name) { return std::getenv(("PEDNAV_TEST_OPENED_" + name).c_str()) != nullptr; }
+inline bool marked(const std::string& name) {
+    return std::getenv(("PEDNAV_TEST_OPENED_" + name).c_str()) != nullptr;
+}
 inline void clear_marks() {
     for (const auto& n : lazy_names()) unsetenv(("PEDNAV_TEST_OPENED_" + n).c_str());
 }

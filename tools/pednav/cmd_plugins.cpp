@@ -4,8 +4,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
 #include <pednav/pn_engine.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_common.hpp"
 
@@ -49,10 +49,14 @@ int pednav_cmd_plugins(const std::vector<std::string>& argv) {
     std::vector<std::string> dirs = {cli::default_plugin_dir()};
     while (!args.done()) {
         const std::string a = args.next();
-        if (a == "--json") json = true;
-        else if (a == "--no-open") flags = 0;
-        else if (a == "--plugin-dir") dirs.push_back(args.value(a));
-        else throw cli::UsageError("unknown option " + a + " for plugins");
+        if (a == "--json")
+            json = true;
+        else if (a == "--no-open")
+            flags = 0;
+        else if (a == "--plugin-dir")
+            dirs.push_back(args.value(a));
+        else
+            throw cli::UsageError("unknown option " + a + " for plugins");
     }
     const nlohmann::json j = describe_plugins(dirs, flags);
     if (json) {
@@ -63,16 +67,18 @@ int pednav_cmd_plugins(const std::vector<std::string>& argv) {
     for (const auto& p : j["plugins"]) {
         std::string mounts;
         for (const auto& m : p["mounts"]) mounts += (mounts.empty() ? "" : ",") + m.get<std::string>();
-        std::printf("%-44s %-19s %-8s %s\n", p["id"].get<std::string>().c_str(), p["kind"].get<std::string>().c_str(),
-                    p["version"].get<std::string>().c_str(), mounts.empty() ? "any" : mounts.c_str());
+        std::printf("%-44s %-19s %-8s %s\n", p["id"].get<std::string>().c_str(),
+                    p["kind"].get<std::string>().c_str(), p["version"].get<std::string>().c_str(),
+                    mounts.empty() ? "any" : mounts.c_str());
     }
     for (const auto& l : j["libraries"])
-        std::printf("library %s (%s)%s\n", l["path"].get<std::string>().c_str(), l["id"].get<std::string>().c_str(),
-                    l["manifest"].is_null() ? ", no manifest" : "");
+        std::printf("library %s (%s)%s\n", l["path"].get<std::string>().c_str(),
+                    l["id"].get<std::string>().c_str(), l["manifest"].is_null() ? ", no manifest" : "");
     for (const auto& r : j["rejected"])
-        std::printf("rejected %s: %s (%s)\n", r["path"].get<std::string>().c_str(), r["reason"].get<std::string>().c_str(),
-                    r["status"].get<std::string>().c_str());
+        std::printf("rejected %s: %s (%s)\n", r["path"].get<std::string>().c_str(),
+                    r["reason"].get<std::string>().c_str(), r["status"].get<std::string>().c_str());
     for (const auto& w : j["load_warnings"])
-        std::printf("warning %s: %s\n", w["path"].get<std::string>().c_str(), w["warning"].get<std::string>().c_str());
+        std::printf("warning %s: %s\n", w["path"].get<std::string>().c_str(),
+                    w["warning"].get<std::string>().c_str());
     return 0;
 }
