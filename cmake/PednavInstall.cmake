@@ -5,11 +5,17 @@ include(CMakePackageConfigHelpers)
 
 set(PEDNAV_CMAKE_INSTALL_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/pednav")
 
-# pednav_abi -> pednav::abi, pednav_sdk -> pednav::sdk, pednav -> pednav::pednav.
+# pednav_abi -> pednav::abi, pednav_sdk -> pednav::sdk, pednav -> pednav::pednav,
+# pednav_manifest -> pednav::manifest, pednav_core -> pednav::pednav_static.
 set_target_properties(pednav_abi PROPERTIES EXPORT_NAME abi)
 set_target_properties(pednav_sdk PROPERTIES EXPORT_NAME sdk)
 
+# Two export sets: everything a C app needs, and the C++ SDK, which alone
+# needs nlohmann_json (pednavConfig.cmake loads it only where that is found).
 install(EXPORT pednavTargets
+  NAMESPACE pednav::
+  DESTINATION "${PEDNAV_CMAKE_INSTALL_DIR}")
+install(EXPORT pednavSdkTargets
   NAMESPACE pednav::
   DESTINATION "${PEDNAV_CMAKE_INSTALL_DIR}")
 

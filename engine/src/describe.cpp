@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Engine::describe_json: what was loaded, refused and wired, as JSON.
+#include <cstring>
+
 #include <nlohmann/json.hpp>
 
 #include "engine.hpp"
@@ -17,7 +19,9 @@ nlohmann::json type_names(uint64_t mask) {
     return a;
 }
 
-nlohmann::json plugin_json(const pnp_descriptor_t* d, const std::string& library) {
+}  // namespace
+
+nlohmann::json describe_plugin(const pnp_descriptor_t* d) {
     nlohmann::json p = {{"id", d->id},
                         {"name", d->name ? d->name : ""},
                         {"version", d->version ? d->version : ""},
@@ -25,12 +29,15 @@ nlohmann::json plugin_json(const pnp_descriptor_t* d, const std::string& library
                         {"description", d->description ? d->description : ""},
                         {"kind", kind_name(d->kind)},
                         {"kind_version", d->kind_version},
-                        {"library", library},
                         {"consumes", type_names(d->consumes)},
                         {"produces", type_names(d->produces)}};
-    nlohmann::json features = nlohmann::json::array();
-    for (const char* const* f = d->features; f && *f; ++f) features.push_back(*f);
+    nlohmann::json features = nlohmann::json::array(), mounts = nlohmann::json::array();
+    for (const char* const* f = d->features; f && *f; ++f) {
+        features.push_back(*f);
+        if (std::strncmp(*f, "mount:", 6) == 0) mounts.push_back(*f + 6);
+    }
     p["features"] = features;
+    p["mounts"] = mounts;  // from the mount: features; empty = any mount
     p["params_schema"] = nullptr;
     if (d->params_schema_json) {
         auto schema = nlohmann::json::parse(d->params_schema_json, nullptr, false);
@@ -39,27 +46,38 @@ nlohmann::json plugin_json(const pnp_descriptor_t* d, const std::string& library
     return p;
 }
 
-}  // namespace
-
 nlohmann::json describe_loader(const Loader& loader) {
+    const auto& files = loader.libraries();
     nlohmann::json j;
     j["libraries"] = nlohmann::json::array();
-    for (size_t i = 0; i < loader.libraries().size(); ++i) {
-        const auto& l = loader.libraries()[i];
+    for (size_t i = 0; i < files.size(); ++i) {
+        const LibraryFile& l = files[i];
+        if (l.refused || (!l.library && !l.manifest)) continue;  // refused, or found but not opened
         nlohmann::json ids = nlohmann::json::array();
         for (const auto& p : loader.plugins())
-            if (p.library_index == i) ids.push_back(p.descriptor->id);
+            if (p.library_index == i) ids.push_back(p.id);
+        const std::string id = l.library ? (l.library->id ? l.library->id : "") : l.manifest->library_id;
+        const std::string version =
+            l.library ? (l.library->version ? l.library->version : "") : l.manifest->library_version;
         j["libraries"].push_back({{"path", l.path},
-                                  {"id", l.library->id ? l.library->id : ""},
-                                  {"version", l.library->version ? l.library->version : ""},
-                                  {"plugins", ids}});
+                                  {"id", id},
+                                  {"version", version},
+                                  {"plugins", ids},
+                                  {"manifest", l.manifest ? nlohmann::json(l.manifest->path) : nlohmann::json()},
+                                  {"opened", l.library != nullptr}});
     }
     j["plugins"] = nlohmann::json::array();
-    for (const auto& p : loader.plugins())
-        j["plugins"].push_back(plugin_json(p.descriptor, loader.libraries()[p.library_index].path));
+    for (const auto& p : loader.plugins()) {
+        const LibraryFile& l = files[p.library_index];
+        nlohmann::json entry = p.descriptor ? describe_plugin(p.descriptor) : l.manifest->plugins[p.manifest_entry].entry;
+        entry["library"] = l.path;
+        j["plugins"].push_back(entry);
+    }
     j["rejected"] = nlohmann::json::array();
     for (const auto& r : loader.rejected())
         j["rejected"].push_back({{"path", r.path}, {"status", pn_status_name(r.status)}, {"reason", r.reason}});
+    j["load_warnings"] = nlohmann::json::array();
+    for (const auto& w : loader.warnings()) j["load_warnings"].push_back({{"path", w.path}, {"warning", w.message}});
     return j;
 }
 

@@ -43,7 +43,7 @@ Role role_for_kind(pnp_kind_t kind) {
 std::string available_ids(const Loader& loader, Role role) {
     std::string list;
     for (const auto& p : loader.plugins())
-        if (role_for_kind(p.descriptor->kind) == role) list += (list.empty() ? "" : ", ") + std::string(p.descriptor->id);
+        if (role_for_kind(p.kind) == role) list += (list.empty() ? "" : ", ") + p.id;
     return list.empty() ? "none" : list;
 }
 
@@ -64,12 +64,18 @@ Engine::Engine(const pn_engine_create_info_t& info)
     config_ = parse_config(config_text(info));
     if (config_.has_origin) origin_.set(config_.origin, GeoOrigin::Source::config);
 
+    // Manifests first; then only the libraries of the configured plugin ids are opened.
     for (uint32_t i = 0; i < info.plugin_dir_count; ++i)
         if (info.plugin_dirs && info.plugin_dirs[i]) loader_->scan_directory(info.plugin_dirs[i]);
     for (uint32_t i = 0; i < info.static_library_count; ++i)
         if (info.static_libraries) loader_->add_static_library(info.static_libraries[i], "<static:" + std::to_string(i) + ">");
+    std::vector<std::string> wanted_ids;
+    for (const StageConfig& sc : config_.stages) wanted_ids.push_back(sc.plugin_id);
+    loader_->open_for(wanted_ids);
     for (const auto& r : loader_->rejected())
         diagnostics_.log(PNP_LOG_WARN, "engine", ("rejected plugin file " + r.path + ": " + r.reason).c_str());
+    for (const auto& w : loader_->warnings())
+        diagnostics_.log(PNP_LOG_WARN, "engine", (w.path + ": " + w.message).c_str());
 
     std::vector<std::unique_ptr<Stage>> stages = plan_stages();
     check_pipeline_needs(stages);
@@ -87,7 +93,7 @@ std::vector<std::unique_ptr<Stage>> Engine::plan_stages() {
             const std::string why = loader_->rejection_for(sc.plugin_id);
             throw ConfigProblem{PN_E_NOT_FOUND, sc.pointer + "/plugin",
                                 "plugin " + sc.plugin_id + " is not available: " +
-                                    (why.empty() ? "no loaded library provides it (" + std::string(role_name(sc.role)) +
+                                    (why.empty() ? "no library found provides it (" + std::string(role_name(sc.role)) +
                                                        " plugins found: " + available_ids(*loader_, sc.role) + ")"
                                                  : "its library was rejected: " + why)};
         }
@@ -118,11 +124,11 @@ void Engine::create_instances(std::vector<std::unique_ptr<Stage>>& stages) {
         Stage& stage = *stages[k];
         const StageConfig& sc = config_.stages[k];
         const AvailablePlugin* p = loader_->find(sc.plugin_id);
-        const LoadedLibrary& lib = loader_->libraries()[p->library_index];
+        const LibraryFile& lib = loader_->libraries()[p->library_index];
         pn_error_t err{};
         err.struct_size = sizeof err;
         const pnp_host_t* library_host = nullptr;  // what the library's init gets, if it runs now
-        if (lib.init_count == 0) {
+        if (!lib.init_done) {
             auto host = std::make_unique<HostContext>();
             host->source = lib.library->id && *lib.library->id ? lib.library->id : lib.path;
             host->diagnostics = &diagnostics_;

@@ -5,9 +5,11 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <climits>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 
 namespace pednav::engine {
 
@@ -21,12 +23,23 @@ const char* kind_name(pnp_kind_t kind) {
     }
 }
 
+pnp_kind_t kind_from_name(const std::string& name) {
+    for (pnp_kind_t k : {PNP_KIND_STEP_DETECTOR, PNP_KIND_ATTITUDE_ESTIMATOR, PNP_KIND_POSITION_FILTER,
+                         PNP_KIND_MAP_MATCHER})
+        if (name == kind_name(k)) return k;
+    return 0;
+}
+
 namespace {
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 bool ends_with(const std::string& s, const char* suffix) {
     const size_t n = std::strlen(suffix);
     return s.size() >= n && s.compare(s.size() - n, n, suffix) == 0;
+}
+bool is_file(const std::string& path) {
+    struct stat st;
+    return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
 std::string real_path(const std::string& path) {
@@ -41,6 +54,17 @@ std::string other_major_entry(void* handle) {
         const std::string name = "pnp_entry_v" + std::to_string(major);
         if (dlsym(handle, name.c_str())) return name;
     }
+    return {};
+}
+
+std::string check_library(const pnp_library_t* lib) {
+    if (!lib) return "entry function returned NULL";
+    if (PN_ABI_VERSION_MAJOR(lib->abi_version) != PN_ABI_MAJOR)
+        return "library ABI major " + std::to_string(PN_ABI_VERSION_MAJOR(lib->abi_version)) +
+               ", this engine speaks " + std::to_string(PN_ABI_MAJOR);
+    if (lib->struct_size < PNP_LIBRARY_MIN_SIZE)
+        return "library struct_size " + std::to_string(lib->struct_size) + " is below the minimum " +
+               std::to_string(PNP_LIBRARY_MIN_SIZE);
     return {};
 }
 
@@ -66,11 +90,14 @@ std::string check_descriptor(const pnp_descriptor_t* d) {
     return {};
 }
 
+constexpr const char* kNoManifest =
+    ": it is opened only when a configured plugin id is in no manifest (pednav_add_plugin writes one)";
+
 }  // namespace
 
 Loader::~Loader() {
     for (auto it = libraries_.rbegin(); it != libraries_.rend(); ++it) {
-        if (it->init_count > 0 && it->library->deinit) it->library->deinit();
+        if (it->init_done && it->library->deinit) it->library->deinit();
         if (it->handle) dlclose(it->handle);
     }
 }
@@ -79,105 +106,15 @@ void Loader::reject(const std::string& path, pn_status_t status, const std::stri
     rejected_.push_back({path, status, reason});
 }
 
-void Loader::scan_directory(const std::string& dir) {
-    DIR* d = opendir(dir.c_str());
-    if (!d) {
-        reject(dir, PN_E_NOT_FOUND, std::string("plugin directory cannot be opened: ") + std::strerror(errno));
-        return;
-    }
-    std::vector<std::string> names;
-    while (dirent* e = readdir(d)) {
-        const std::string name = e->d_name;
-        if (starts_with(name, "libpnp_") && ends_with(name, ".so")) names.push_back(name);
-    }
-    closedir(d);
-    std::sort(names.begin(), names.end());
-    for (const auto& name : names) {
-        const std::string path = real_path(dir + "/" + name);
-        bool seen = false;
-        for (const auto& l : libraries_) seen = seen || l.path == path;
-        if (seen) continue;  // the same file reached through two directories
-        dlerror();
-        void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!handle) {
-            const char* e = dlerror();
-            reject(path, PN_E_IO, std::string("dlopen failed: ") + (e ? e : "unknown error"));
-            continue;
-        }
-        void* sym = dlsym(handle, PNP_ENTRY_SYMBOL);
-        if (!sym) {
-            const std::string other = other_major_entry(handle);
-            if (!other.empty())
-                reject(path, PN_E_ABI_MISMATCH,
-                       "exports " + other + " (another ABI major) but not " PNP_ENTRY_SYMBOL
-                       "; this engine speaks ABI major " + std::to_string(PN_ABI_MAJOR));
-            else
-                reject(path, PN_E_NOT_FOUND, "no entry symbol " PNP_ENTRY_SYMBOL ": not a pednav plugin");
-            dlclose(handle);
-            continue;
-        }
-        Dl_info info;
-        if (dladdr(sym, &info) == 0 || !info.dli_fname || real_path(info.dli_fname) != path) {
-            reject(path, PN_E_ABI_MISMATCH,
-                   std::string("entry symbol comes from another object (") +
-                       (info.dli_fname ? info.dli_fname : "?") + "), not from this file");
-            dlclose(handle);
-            continue;
-        }
-        const pnp_library_t* lib = reinterpret_cast<pnp_entry_fn>(sym)();
-        const size_t before = libraries_.size();
-        add_library(lib, handle, path);
-        if (libraries_.size() == before) dlclose(handle);
-    }
-}
-
-void Loader::add_static_library(const pnp_library_t* library, const std::string& label) {
-    add_library(library, nullptr, label);
-}
-
-void Loader::add_library(const pnp_library_t* lib, void* handle, const std::string& path) {
-    if (!lib) return reject(path, PN_E_ABI_MISMATCH, "entry function returned NULL");
-    if (PN_ABI_VERSION_MAJOR(lib->abi_version) != PN_ABI_MAJOR)
-        return reject(path, PN_E_ABI_MISMATCH,
-                      "library ABI major " + std::to_string(PN_ABI_VERSION_MAJOR(lib->abi_version)) +
-                          ", this engine speaks " + std::to_string(PN_ABI_MAJOR));
-    if (lib->struct_size < PNP_LIBRARY_MIN_SIZE)
-        return reject(path, PN_E_ABI_MISMATCH,
-                      "library struct_size " + std::to_string(lib->struct_size) +
-                          " is below the minimum " + std::to_string(PNP_LIBRARY_MIN_SIZE));
-    if (lib->plugin_count == 0 || !lib->plugins)
-        return reject(path, PN_E_NOT_FOUND, "library declares no plugins");
-    std::vector<const pnp_descriptor_t*> good;
-    for (uint32_t i = 0; i < lib->plugin_count; ++i) {
-        const pnp_descriptor_t* d = lib->plugins[i];
-        const std::string problem = check_descriptor(d);
-        if (!problem.empty()) {
-            if (d && d->id) rejected_ids_[d->id] = problem + " (" + path + ")";
-            reject(path, PN_E_ABI_MISMATCH, problem);
-            continue;
-        }
-        if (const AvailablePlugin* prior = find(d->id)) {
-            const std::string& other = libraries_[prior->library_index].path;
-            reject(path, PN_E_INVALID_ARGUMENT,
-                   std::string("duplicate plugin id ") + d->id + ": already provided by " + other);
-            continue;
-        }
-        bool twice = false;
-        for (const auto* g : good) twice = twice || std::strcmp(g->id, d->id) == 0;
-        if (twice) {
-            reject(path, PN_E_INVALID_ARGUMENT, std::string("duplicate plugin id ") + d->id + " within the library");
-            continue;
-        }
-        good.push_back(d);
-    }
-    if (good.empty()) return;
-    libraries_.push_back({path, handle, lib, 0});
-    for (const auto* d : good) plugins_.push_back({d, libraries_.size() - 1});
+AvailablePlugin* Loader::entry_for(const std::string& id) {
+    for (auto& p : plugins_)
+        if (p.id == id) return &p;
+    return nullptr;
 }
 
 const AvailablePlugin* Loader::find(const std::string& id) const {
     for (const auto& p : plugins_)
-        if (id == p.descriptor->id) return &p;
+        if (p.id == id) return p.descriptor ? &p : nullptr;
     return nullptr;
 }
 
@@ -186,14 +123,236 @@ std::string Loader::rejection_for(const std::string& id) const {
     return it == rejected_ids_.end() ? std::string() : it->second;
 }
 
+void Loader::scan_directory(const std::string& dir) {
+    DIR* d = opendir(dir.c_str());
+    if (!d) {
+        reject(dir, PN_E_NOT_FOUND,
+               std::string("plugin directory cannot be opened: ") + std::strerror(errno));
+        return;
+    }
+    std::vector<std::string> libraries;
+    std::set<std::string> manifests;
+    while (dirent* e = readdir(d)) {
+        const std::string name = e->d_name;
+        if (!starts_with(name, "libpnp_")) continue;
+        if (ends_with(name, ".so"))
+            libraries.push_back(name);
+        else if (ends_with(name, ".json"))
+            manifests.insert(name);
+    }
+    closedir(d);
+    std::sort(libraries.begin(), libraries.end());
+    for (const auto& name : libraries) {
+        manifests.erase(manifest_path_for(name));
+        add_found_file(dir, name);
+    }
+    for (const auto& m : manifests)
+        warnings_.push_back(
+            {real_path(dir + "/" + m),
+             "manifest without its library " + m.substr(0, m.size() - 5) + ".so beside it: ignored"});
+}
+
+void Loader::add_found_file(const std::string& dir, const std::string& name) {
+    const std::string path = real_path(dir + "/" + name);
+    for (const auto& l : libraries_)
+        if (l.path == path) return;  // the same file reached through two directories
+    LibraryFile file;
+    file.path = path;
+    const std::string manifest = real_path(manifest_path_for(dir + "/" + name));
+    if (!is_file(manifest)) {
+        warnings_.push_back({path, "no manifest " + manifest_path_for(name) + " beside it" + kNoManifest});
+    } else {
+        try {
+            Manifest m = read_manifest(manifest);
+            if (m.file != name)
+                throw ManifestError{PN_E_BAD_INPUT,
+                                    "manifest " + manifest + " describes " + m.file + ", not " + name};
+            file.manifest = std::move(m);
+        } catch (const ManifestError& e) {
+            reject(manifest, e.status, e.message);
+            warnings_.push_back(
+                {path, "its manifest " + manifest_path_for(name) + " is refused" + kNoManifest});
+        }
+    }
+    libraries_.push_back(std::move(file));
+    if (libraries_.back().manifest) list_manifest_plugins(libraries_.size() - 1);
+}
+
+void Loader::list_manifest_plugins(size_t index) {
+    const LibraryFile& file = libraries_[index];
+    const Manifest& m = *file.manifest;
+    if (m.abi_major != PN_ABI_MAJOR)
+        return refuse(index, PN_E_ABI_MISMATCH,
+                      "its manifest says ABI major " + std::to_string(m.abi_major) + ", this engine speaks " +
+                          std::to_string(PN_ABI_MAJOR) + ": not opened");
+    for (size_t k = 0; k < m.plugins.size(); ++k) {
+        const ManifestPlugin& p = m.plugins[k];
+        if (const AvailablePlugin* prior = entry_for(p.id)) {
+            reject(file.path, PN_E_INVALID_ARGUMENT,
+                   "duplicate plugin id " + p.id + ": already provided by " +
+                       libraries_[prior->library_index].path);
+            continue;
+        }
+        plugins_.push_back({p.id, p.kind, index, nullptr, static_cast<int>(k)});
+    }
+}
+
+void Loader::add_static_library(const pnp_library_t* library, const std::string& label) {
+    LibraryFile file;
+    file.path = label;
+    libraries_.push_back(std::move(file));
+    const size_t index = libraries_.size() - 1;
+    if (accept_library(index, library)) add_descriptors(index);
+}
+
+void Loader::open_for(const std::vector<std::string>& ids) {
+    for (const auto& id : ids)
+        if (const AvailablePlugin* p = entry_for(id); p && !p->descriptor) open_library(p->library_index);
+    auto missing = [&] {
+        for (const auto& id : ids)
+            if (!find(id)) return true;
+        return false;
+    };
+    for (size_t i = 0; i < libraries_.size() && missing(); ++i)
+        if (!libraries_[i].manifest) open_library(i);
+}
+
+void Loader::open_all() {
+    for (size_t i = 0; i < libraries_.size(); ++i) open_library(i);
+}
+
+bool Loader::open_file(const std::string& path) {
+    LibraryFile file;
+    file.path = real_path(path);
+    libraries_.push_back(std::move(file));
+    open_library(libraries_.size() - 1);
+    return !libraries_.back().refused;
+}
+
+void Loader::refuse(size_t index, pn_status_t status, const std::string& reason) {
+    LibraryFile& file = libraries_[index];
+    file.refused = true;
+    reject(file.path, status, reason);
+    if (file.manifest)
+        for (const auto& p : file.manifest->plugins)
+            rejected_ids_.emplace(p.id, reason + " (" + file.path + ")");
+    plugins_.erase(std::remove_if(plugins_.begin(), plugins_.end(),
+                                  [&](const AvailablePlugin& p) { return p.library_index == index; }),
+                   plugins_.end());
+}
+
+void Loader::open_library(size_t index) {
+    if (libraries_[index].library || libraries_[index].refused) return;
+    const std::string path = libraries_[index].path;
+    dlerror();
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+        const char* e = dlerror();
+        return refuse(index, PN_E_IO, std::string("dlopen failed: ") + (e ? e : "unknown error"));
+    }
+    void* sym = dlsym(handle, PNP_ENTRY_SYMBOL);
+    std::string problem;
+    pn_status_t status = PN_E_ABI_MISMATCH;
+    Dl_info info{};
+    if (!sym) {
+        const std::string other = other_major_entry(handle);
+        if (!other.empty()) {
+            problem = "exports " + other +
+                      " (another ABI major) but not " PNP_ENTRY_SYMBOL "; this engine speaks ABI major " +
+                      std::to_string(PN_ABI_MAJOR);
+        } else {
+            status = PN_E_NOT_FOUND;
+            problem = "no entry symbol " PNP_ENTRY_SYMBOL ": not a pednav plugin";
+        }
+    } else if (dladdr(sym, &info) == 0 || !info.dli_fname || real_path(info.dli_fname) != path) {
+        problem = std::string("entry symbol comes from another object (") +
+                  (info.dli_fname ? info.dli_fname : "?") + "), not from this file";
+    }
+    if (!problem.empty()) {
+        dlclose(handle);
+        return refuse(index, status, problem);
+    }
+    libraries_[index].handle = handle;
+    if (!accept_library(index, reinterpret_cast<pnp_entry_fn>(sym)())) return;
+    add_descriptors(index);
+}
+
+// Checks the library struct and, for a library with a manifest, that both say
+// the same. Refuses (and closes) the library otherwise.
+bool Loader::accept_library(size_t index, const pnp_library_t* library) {
+    LibraryFile& file = libraries_[index];
+    std::string problem = check_library(library);
+    pn_status_t status = PN_E_ABI_MISMATCH;
+    if (problem.empty() && (library->plugin_count == 0 || !library->plugins)) {
+        status = PN_E_NOT_FOUND;
+        problem = "library declares no plugins";
+    }
+    if (problem.empty() && file.manifest) problem = manifest_disagreement(*file.manifest, library);
+    if (problem.empty()) {
+        file.library = library;
+        return true;
+    }
+    if (file.handle) dlclose(file.handle);
+    file.handle = nullptr;
+    refuse(index, status, problem);
+    return false;
+}
+
+void Loader::add_descriptors(size_t index) {
+    LibraryFile& file = libraries_[index];
+    const pnp_library_t* lib = file.library;
+    size_t offered = 0;
+    for (uint32_t i = 0; i < lib->plugin_count; ++i) {
+        const pnp_descriptor_t* d = lib->plugins[i];
+        const std::string problem = check_descriptor(d);
+        if (!problem.empty()) {
+            if (d && d->id) {
+                rejected_ids_[d->id] = problem + " (" + file.path + ")";
+                plugins_.erase(std::remove_if(plugins_.begin(), plugins_.end(),
+                                              [&](const AvailablePlugin& p) {
+                                                  return p.library_index == index && p.id == d->id;
+                                              }),
+                               plugins_.end());
+            }
+            reject(file.path, PN_E_ABI_MISMATCH, problem);
+            continue;
+        }
+        AvailablePlugin* entry = entry_for(d->id);
+        if (entry && entry->library_index != index) {
+            bool reported = false;  // from the manifest, when it was read
+            if (file.manifest)
+                for (const auto& p : file.manifest->plugins) reported = reported || p.id == d->id;
+            if (!reported)
+                reject(file.path, PN_E_INVALID_ARGUMENT,
+                       std::string("duplicate plugin id ") + d->id + ": already provided by " +
+                           libraries_[entry->library_index].path);
+        } else if (entry && entry->descriptor) {
+            reject(file.path, PN_E_INVALID_ARGUMENT,
+                   std::string("duplicate plugin id ") + d->id + " within the library");
+        } else if (entry) {
+            entry->descriptor = d;  // listed by the manifest
+            ++offered;
+        } else {
+            plugins_.push_back({d->id, d->kind, index, d, -1});
+            ++offered;
+        }
+    }
+    if (offered == 0) {  // every plugin refused, each with its reason: nothing to keep open
+        if (file.handle) dlclose(file.handle);
+        file.handle = nullptr;
+        file.library = nullptr;
+        file.refused = true;
+    }
+}
+
 pn_status_t Loader::ensure_init(size_t library_index, const pnp_host_t* host, pn_error_t* err) {
-    LoadedLibrary& l = libraries_[library_index];
-    if (l.init_count > 0) return PN_OK;
+    LibraryFile& l = libraries_[library_index];
+    if (l.init_done) return PN_OK;
     if (PNP_HAS_SLOT(l.library, pnp_library_t, init)) {
         const pn_status_t s = l.library->init(host, err);
         if (PN_FAILED(s)) return s;
     }
-    l.init_count = 1;
+    l.init_done = true;
     return PN_OK;
 }
 

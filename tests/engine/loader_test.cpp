@@ -1,11 +1,14 @@
 // Loader: every fixture library is either loaded or rejected with a reason
-// that names the problem, never a crash; describe reports both.
+// that names the problem, never a crash; describe reports both. The raw C
+// fixtures have no manifest, so an engine opens them only when a configured id
+// is in no manifest; pn_plugins_describe with PN_LIST_OPEN_LIBRARIES opens them all.
 #include <dlfcn.h>
 
 #include <map>
 
 #include <doctest/doctest.h>
 
+#include "plugin_listing.hpp"
 #include "test_support.hpp"
 
 using namespace pednav::test;
@@ -32,9 +35,8 @@ TEST_CASE("each bad fixture is rejected with its file, status and a reason namin
     };
     for (const auto& c : cases) {
         CAPTURE(c.fixture);
-        Engine e(kGoodConfig, {fixture_dir("good"), fixture_dir(c.fixture)});
-        REQUIRE(e.status() == PN_OK);  // a bad file next to good ones does not stop the engine
-        const auto d = e.describe();
+        const auto d = list_plugins({fixture_dir("good"), fixture_dir(c.fixture)}, PN_LIST_OPEN_LIBRARIES);
+        REQUIRE(d.is_object());
         REQUIRE(d["rejected"].size() == 1);
         const auto r = rejected_entry(d, std::string("/libpnp_") + c.fixture + ".so");
         REQUIRE(!r.is_null());
@@ -43,22 +45,34 @@ TEST_CASE("each bad fixture is rejected with its file, status and a reason namin
         for (const auto& m : c.reason_mentions) CHECK_MESSAGE(contains(reason, m), reason);
         // Only the good library's four plugins are offered.
         CHECK(d["plugins"].size() == 4);
+
+        // An engine whose plugins are all in the good library's manifest never opens the bad one.
+        Engine e(kGoodConfig, {fixture_dir("good"), fixture_dir(c.fixture)});
+        REQUIRE(e.status() == PN_OK);  // a bad file next to good ones does not stop the engine
+        CHECK(e.describe()["rejected"].empty());
     }
 }
 
-TEST_CASE("a duplicate plugin id is rejected naming the id and the library that already provides it") {
-    Engine e(kGoodConfig, {fixture_dir("good"), fixture_dir("duplicate_id")});
-    REQUIRE(e.status() == PN_OK);
+TEST_CASE("a configured id in no manifest opens the libraries without one, in order, until it is found") {
+    // Directory order: the five bad raw fixtures, then old_minor, then new_minor.
+    std::vector<std::string> dirs;
+    for (const char* f : {"good", "wrong_major", "wrong_major_field", "no_entry", "too_small", "too_small_descriptor",
+                          "old_minor", "new_minor"})
+        dirs.push_back(fixture_dir(f));
+    Engine e(make_config({{"position_filter", "org.pednav.test.old_minor"}}), dirs);
+    REQUIRE_MESSAGE(e.status() == PN_OK, e.error().message);
     const auto d = e.describe();
-    const auto r = rejected_entry(d, "/libpnp_duplicate_id.so");
-    REQUIRE(!r.is_null());
-    const std::string reason = r["reason"];
-    CHECK(contains(reason, "duplicate"));
-    CHECK(contains(reason, "org.pednav.test.counting_steps"));
-    CHECK(contains(reason, "libpnp_good.so"));
-    // The id still resolves to the first library, the good one.
-    for (const auto& p : d["plugins"])
-        if (p["id"] == "org.pednav.test.counting_steps") CHECK(p["version"] == "1.0.0");
+    CHECK(d["rejected"].size() == 5);
+    for (const char* f : {"wrong_major", "wrong_major_field", "no_entry", "too_small", "too_small_descriptor"})
+        CHECK_MESSAGE(!rejected_entry(d, std::string("/libpnp_") + f + ".so").is_null(), f);
+    CHECK(is_loaded(fixture_dir("old_minor") + "/libpnp_old_minor.so"));
+    CHECK_FALSE(is_loaded(fixture_dir("new_minor") + "/libpnp_new_minor.so"));  // after the one wanted
+    const auto good = entry_ending(d, "libraries", "/libpnp_good.so");  // listed by its manifest, not wanted
+    REQUIRE(!good.is_null());
+    CHECK(good["opened"] == false);
+    // Seven libraries found without a manifest, each named once in the warnings.
+    CHECK(d["load_warnings"].size() == 7);
+    CHECK(!entry_ending(d, "load_warnings", "/libpnp_new_minor.so").is_null());
 }
 
 TEST_CASE("all fixture directories at once: six rejected, eight plugins loaded") {
@@ -66,9 +80,8 @@ TEST_CASE("all fixture directories at once: six rejected, eight plugins loaded")
     for (const char* f : {"good", "throws", "emits_nan", "duplicate_id", "wrong_major", "wrong_major_field",
                           "no_entry", "too_small", "too_small_descriptor", "old_minor", "new_minor"})
         dirs.push_back(fixture_dir(f));
-    Engine e(kGoodConfig, dirs);
-    REQUIRE(e.status() == PN_OK);
-    const auto d = e.describe();
+    const auto d = list_plugins(dirs, PN_LIST_OPEN_LIBRARIES);
+    REQUIRE(d.is_object());
     CHECK(d["rejected"].size() == 6);
     CHECK(d["plugins"].size() == 8);
     for (const auto& p : d["plugins"]) {
@@ -77,9 +90,22 @@ TEST_CASE("all fixture directories at once: six rejected, eight plugins loaded")
         CHECK(p.contains("version"));
         CHECK(p.contains("library"));
     }
+
+    // An engine on the good library opens it alone: the duplicate id is known from
+    // duplicate_id's manifest, the raw fixtures are only found.
+    Engine e(kGoodConfig, dirs);
+    REQUIRE(e.status() == PN_OK);
+    const auto ed = e.describe();
+    REQUIRE(ed["rejected"].size() == 1);
+    CHECK(contains(ed["rejected"][0]["path"].get<std::string>(), "libpnp_duplicate_id.so"));
+    CHECK(ed["plugins"].size() == 6);  // good's four, throws and emits_nan: listed, not opened
+    size_t opened = 0;
+    for (const auto& l : ed["libraries"]) opened += l["opened"].get<bool>() ? 1 : 0;
+    CHECK(opened == 1);
+    CHECK(ed["load_warnings"].size() == 7);
 }
 
-TEST_CASE("describe lists the good plugins with kind, version and library file") {
+TEST_CASE("describe lists the good plugins with kind, version, mounts, library file and manifest") {
     Engine e(kGoodConfig, {fixture_dir("good")});
     REQUIRE(e.status() == PN_OK);
     const auto d = e.describe();
@@ -93,7 +119,12 @@ TEST_CASE("describe lists the good plugins with kind, version and library file")
     CHECK(kinds["org.pednav.test.fixed_heading"] == "attitude_estimator");
     CHECK(kinds["org.pednav.test.step_counter"] == "position_filter");
     CHECK(kinds["org.pednav.test.floor_from_baro"] == "map_matcher");
+    CHECK(d["plugins"][0]["mounts"] == nlohmann::json({"foot", "chest", "waist"}));
     CHECK(d["rejected"].empty());
+    CHECK(d["load_warnings"].empty());
+    REQUIRE(d["libraries"].size() == 1);
+    CHECK(d["libraries"][0]["opened"] == true);
+    CHECK(d["libraries"][0]["manifest"] == fixture_dir("good") + "/libpnp_good.json");
 }
 
 TEST_CASE("a missing plugin directory is reported, not fatal") {
@@ -104,16 +135,22 @@ TEST_CASE("a missing plugin directory is reported, not fatal") {
     CHECK(r["status"] == "PN_E_NOT_FOUND");
 }
 
-TEST_CASE("rejected files are logged through the app's log callback") {
+TEST_CASE("rejected files and libraries without a manifest are logged through the app's log callback") {
     std::vector<std::string> lines;
     auto log = [](void* user, int32_t, const char* source, const char* msg) {
         static_cast<std::vector<std::string>*>(user)->push_back(std::string(source) + ": " + msg);
     };
-    Engine e(kGoodConfig, {fixture_dir("good"), fixture_dir("no_entry")}, 0, {}, log, &lines);
+    // old_minor is in no manifest: no_entry, before it, is opened and refused.
+    Engine e(make_config({{"position_filter", "org.pednav.test.old_minor"}}),
+             {fixture_dir("no_entry"), fixture_dir("old_minor")}, 0, {}, log, &lines);
     REQUIRE(e.status() == PN_OK);
-    bool found = false;
-    for (const auto& l : lines) found = found || contains(l, "libpnp_no_entry.so");
-    CHECK(found);
+    size_t rejected = 0, no_manifest = 0;
+    for (const auto& l : lines) {
+        rejected += contains(l, "rejected plugin file") && contains(l, "libpnp_no_entry.so") ? 1 : 0;
+        no_manifest += contains(l, "no manifest libpnp_") ? 1 : 0;
+    }
+    CHECK(rejected == 1);
+    CHECK(no_manifest == 2);
 }
 
 TEST_CASE(

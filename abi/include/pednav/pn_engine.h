@@ -226,6 +226,22 @@ PN_API int64_t pn_engine_latency_ns(const pn_engine_t *engine);
 PN_API pn_status_t pn_engine_describe(const pn_engine_t *engine, char *buffer, size_t capacity,
                                       size_t *size);
 
+/* Flag of pn_plugins_describe: also open every library found. */
+#define PN_LIST_OPEN_LIBRARIES 1u
+
+/* [thread-safe] Describes the plugin libraries in the directories without a
+ * config or an engine: JSON with the "libraries", "plugins", "rejected" and
+ * "load_warnings" members of pn_engine_describe (docs/loading.md). flags 0
+ * reads the manifests beside the libraries and opens nothing (a library
+ * without a manifest is only named in "load_warnings");
+ * PN_LIST_OPEN_LIBRARIES also opens every library (running its initializers,
+ * never its init) to read its descriptors and report where a manifest and its
+ * library disagree. Unknown flag bits are refused with PN_E_INVALID_ARGUMENT.
+ * Two-call size idiom as pn_engine_describe: *size is set to the full size
+ * including the NUL; PN_E_INVALID_ARGUMENT if `capacity` is too small. */
+PN_API pn_status_t pn_plugins_describe(const char *const *plugin_dirs, uint32_t dir_count, uint32_t flags,
+                                       char *buffer, size_t capacity, size_t *size, pn_error_t *err);
+
 #ifdef __cplusplus
 }
 #endif

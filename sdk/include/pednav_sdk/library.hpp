@@ -1,6 +1,7 @@
 // PEDNAV_PLUGIN_LIBRARY(lib_id, lib_version, Plugin...): generates the
 // descriptors, the per-kind vtables with exception-catching trampolines, and
-// the one exported entry symbol pnp_entry_v1 of a plugin library.
+// the one exported entry symbol pnp_entry_v1 of a plugin library (in a static
+// library built by pednav_add_plugin: pnp_entry_v1_<NAME>, see PEDNAV_SDK_ENTRY).
 //
 //   #include <pednav_sdk/library.hpp>
 //   class MyDetector : public pednav::sdk::StepDetector { ... };
@@ -382,9 +383,25 @@ struct LibraryOf {
 
 }  // namespace pednav::sdk::detail
 
+// The entry function: pnp_entry_v1, exported, in a plugin library; in a static
+// library pnp_entry_v1_<name>, where pednav_add_plugin(NAME <name>) defines
+// PEDNAV_PLUGIN_STATIC_NAME=<name>, so that several plugin libraries link into
+// one binary (iOS) and the app passes pnp_entry_v1_<name>() to the engine.
+#define PEDNAV_SDK_CAT_(a, b) a##b
+#define PEDNAV_SDK_CAT(a, b) PEDNAV_SDK_CAT_(a, b)
+#if defined(PEDNAV_PLUGIN_STATIC_NAME)
+#define PEDNAV_SDK_ENTRY PEDNAV_SDK_CAT(pnp_entry_v1_, PEDNAV_PLUGIN_STATIC_NAME)
+#define PEDNAV_SDK_ENTRY_EXPORT
+#elif defined(_WIN32)
+#define PEDNAV_SDK_ENTRY pnp_entry_v1
+#define PEDNAV_SDK_ENTRY_EXPORT __declspec(dllexport)
+#else
+#define PEDNAV_SDK_ENTRY pnp_entry_v1
+#define PEDNAV_SDK_ENTRY_EXPORT __attribute__((visibility("default")))
+#endif
+
 #define PEDNAV_PLUGIN_LIBRARY(LIB_ID, LIB_VERSION, ...)                                        \
-    extern "C" __attribute__((visibility("default"))) const pnp_library_t* pnp_entry_v1(void) \
-        noexcept {                                                                             \
+    extern "C" PEDNAV_SDK_ENTRY_EXPORT const pnp_library_t* PEDNAV_SDK_ENTRY(void) noexcept {  \
         using Lib_ = ::pednav::sdk::detail::LibraryOf<__VA_ARGS__>;                            \
         static constexpr pnp_library_t library{PN_ABI_VERSION,                                 \
                                                sizeof(pnp_library_t),                          \
