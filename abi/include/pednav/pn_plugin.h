@@ -214,7 +214,11 @@ typedef struct pnp_descriptor_t {
      * produce no such record is refused at create (app input types are not
      * checked: the app may push them). "uses:<type>": used when present. */
     const char *const *features;
-    const char *params_schema_json; /* JSON Schema of params, may be NULL */
+    /* The params as a JSON Schema in the subset of docs/parameters.md (per key:
+     * type, default, range, unit, meaning), the one place a plugin's defaults
+     * are written; the engine checks configs against it before create. NULL =
+     * the plugin checks its params alone. */
+    const char *params_schema_json;
     pnp_kind_t kind;
     uint32_t kind_version;   /* semantics of the kind contract, 1 */
     uint64_t consumes;       /* PN_REC_MASK bits */
