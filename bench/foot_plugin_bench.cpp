@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Throughput of the foot plugins alone, driven through the plugin ABI (dlopen,
 // pnp_entry_v1, process per record) in lock-step with the EKF's correction fed
 // back, as the engine would: stance detection + attitude + EKF, input

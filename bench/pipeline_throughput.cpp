@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pipeline throughput per mount through the real loader and the app C API,
 // printed as JSON: IMU samples per second (best of N passes, input generation
 // excluded) and heap allocations per sample in the steady-state second half.

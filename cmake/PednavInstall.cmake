@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Installs the CMake package (find_package(pednav)) and the pkg-config file.
 # Included at the end of the top-level CMakeLists.txt, once every exported
 # target exists.

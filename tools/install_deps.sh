@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian packages pednav needs, only those that are missing.
 #   tools/install_deps.sh [--java] [extra packages...]
 # --java adds the JDK and JUnit 5 for the optional Java binding (bindings/java).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds pednav and runs the main job on its built-in default: a simulated
 # walk through the foot pipeline, printing its error and writing a plot to
 # out/demo/. Installs missing packages first. Extra arguments go to `pednav demo`.

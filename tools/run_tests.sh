@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds pednav and runs every test (ctest). Installs missing packages first,
 # including the JDK and JUnit 5 for the Java binding's tests.
 #   tools/run_tests.sh              Release build in build/, all tests

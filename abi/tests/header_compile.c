@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Header compile test: abi/tests/CMakeLists.txt compiles this file once per
  * public ABI header (PN_TEST_HEADER) and per language standard, as C and as
  * C++, with -Wall -Wextra -pedantic -Wpadded -Werror. Each header must be

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Layout sentinels of the pednav 1.x ABI on LP64 targets (x86_64, arm64).
  *

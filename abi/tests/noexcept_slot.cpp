@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Negative compile test (C++17): every slot of the plugin ABI is a noexcept
 // function type, so a plugin function that may throw does not even convert to
 // it. abi/tests/CMakeLists.txt compiles this file once per PN_TEST_CASE with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine config document: which plugin fills each role of the pipeline of
 // each mount, with its params. Parsed strictly: an unknown key, a wrong type or
 // a missing plugin id is an error naming the key as a JSON pointer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JSON description of what a Loader found (libraries, plugins, rejected files,
 // load warnings), and of one plugin descriptor.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finds, opens and validates plugin libraries. Nothing is loaded implicitly:
 // only files named libpnp_*.so in the directories the app gives, and the
 // libraries it links in statically.

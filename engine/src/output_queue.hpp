@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The engine's output queue: single producer (the pushing thread) and single
 // consumer (the polling thread), fixed capacity allocated at create. When it is
 // full new outputs are dropped and counted; the newest output of each type is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contract checks on records crossing the engine: app inputs before they enter
 // the pipeline, plugin outputs before the sink accepts them.
 #pragma once

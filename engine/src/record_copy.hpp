@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copying a record the engine was just handed.
 //
 // A plugin fills a record field by field (8-byte stores) and hands it over at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A time-ordered FIFO of records read by several consumers, each with its own
 // cursor (a sequence number). Slots are fixed 512-byte cells in a power-of-two
 // ring that doubles when full and is reused otherwise, so steady-state

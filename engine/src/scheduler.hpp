@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Streams records through the stages of one pipeline, sample by sample, in
 // timestamp order. See docs/scheduler.md for the rules; in short:
 //

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * pednav C API example: embed the engine in a C99 program using only
  * <pednav/pn_engine.h>.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # pednav_add_plugin(<target> NAME <name> SOURCES <files...> [LIBRARIES <libs...>]
 #                   [OUTPUT_DIRECTORY <dir>] [INSTALL_DESTINATION <dir>] [NO_INSTALL])
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # cmake -DCLI=<pednav> -DARGS="a;b;c" -DEXPECT_RC=<n> [-DEXPECT_OUT=<regex>] [-DEXPECT_ERR=<regex>]
 #       [-DEXPECT_FILE=<path> -DEXPECT_FILE_REGEX=<regex>] -P run_cli.cmake
 # Runs the CLI and checks its exit code, stdout, stderr and an output file.

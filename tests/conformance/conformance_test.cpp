@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Conformance suite stamped onto every first-party plugin: each plugin the
 // loader finds in the first-party plugin directory is put into its role of
 // the preset pipeline of each mount it declares ("mount:<m>" feature), and the

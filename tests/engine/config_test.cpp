@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Config errors: create fails with a status and err.where pointing at the
 // offending key (a JSON pointer into the config).
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loader: every fixture library is either loaded or rejected with a reason
 // that names the problem, never a crash; describe reports both. The raw C
 // fixtures have no manifest, so an engine opens them only when a configured id

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A misbehaving plugin yields a clear error from push, never a crash: the
 // outputs before the failure stay, and the engine keeps working afterwards.
 #include <doctest/doctest.h>

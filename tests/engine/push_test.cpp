@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pushing samples and polling outputs through the C API: input validation,
 // strides, determinism, look-ahead alignment, feedback, flush and reset.
 #include <doctest/doctest.h>

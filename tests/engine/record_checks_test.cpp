@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // White-box tests of the engine's record value checks (record_checks.hpp):
 // the verdict and the reason come from one checker, so a refused record
 // always says why.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // White-box tests of how the engine copies the records it is handed
 // (record_copy.hpp): exactly struct_size bytes, whatever the size, and the
 // queues built on it keep what they are given.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the engine tests. Everything goes through the public C API
 // (pn_engine.h); nlohmann_json only parses pn_engine_describe's output.
 #pragma once

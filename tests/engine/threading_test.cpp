@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pn_engine.h threading contract: one thread may push while one other thread
 // polls. Every output arrives exactly once and in order.
 #include <atomic>

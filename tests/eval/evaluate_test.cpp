@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // evaluate() on tracks whose errors are known by construction.
 #include <doctest/doctest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SVG output: well-formed XML, coordinates where they belong, no NaN.
 #include <doctest/doctest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every metric function on small examples computed by hand.
 #include <doctest/doctest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A folder of this test process's own under the system temp folder, so that
 // two builds running their tests at once do not share files; removed when
 // the process ends.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tracks written by pednav_io (pednav run --output) read back by the evaluation.
 #include <doctest/doctest.h>
 

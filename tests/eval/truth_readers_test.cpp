@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The truth readers on the shared recordings (numbers from each SOURCE.md) and on simulated walks.
 #include <filesystem>
 #include <doctest/doctest.h>

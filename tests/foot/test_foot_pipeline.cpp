@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The foot pipeline through the real engine and plugin loader: accuracy on
 // the shared recordings and on simulated walks with exact truth (issue 3),
 // plus the plugin contract (strict params, determinism, records).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bad files: each problem is reported with its line number and the good rows
 // around it are kept; fatal ones throw ReadError naming the file and reason.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Formats exercised on files the tests write: the IPIN logfile and column maps.
 #include <doctest/doctest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every reader against the values its folder's SOURCE.md states: sample
 // counts, durations, rates, units (via gravity at rest and known rows), axes.
 #include <doctest/doctest.h>

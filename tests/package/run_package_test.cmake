@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Package test, run by ctest:
 #   cmake -DBUILD_DIR=... -DWORK_DIR=... -DCONSUMER_DIR=... -DC_CONSUMER_DIR=... -DC_COMPILER=...
 #         -DCXX_COMPILER=... -DINSTALL_LIBDIR=... -P run_package_test.cmake

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What pednav sim writes is what the engine's reader reads back.
 #include <doctest/doctest.h>
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The analytic derivatives of every profile against central differences.
 #include <doctest/doctest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulator's self-test: with every sensor error off, integrating the
 // simulated IMU from the true initial state reproduces the truth.
 #include <doctest/doctest.h>

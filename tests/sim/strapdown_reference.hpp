@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A reference strapdown integrator for the simulator's self-test: attitude by
 // rotation vector from mid-interval (trapezoidal) rates with the coning term,
 // velocity and position by the trapezoidal rule. Exact up to O(dt^2) on smooth

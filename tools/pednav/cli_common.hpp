@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Small helpers shared by the pednav subcommands: argument parsing, where the
 // first-party plugins and presets are, reading text files.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pednav eval: score a track CSV against a ground truth (docs/metrics.md).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pednav report: run every shared recording that has a ground truth and every
 // built-in simulated walk through the mount presets, score each, and write a
 // markdown accuracy table (per walk, and percentiles across walks per mount),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pednav sim: simulate a walk along a route and write the engine input, the
 // truth, GNSS fixes and the building map (see docs/simulator.md).
 #pragma once

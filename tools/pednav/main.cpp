@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pednav: the command-line front end of the engine.
 #include <cstdio>
 #include <cstring>

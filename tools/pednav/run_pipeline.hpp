@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What `pednav run` and `pednav demo` share: load a preset or config file,
 // replay records through the engine with a progress bar, print a summary.
 #pragma once

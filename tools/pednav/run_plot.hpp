@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `pednav run --plot FILE.svg`: the track of one run as SVG.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every pednav command: its name, its entry point and its usage text.
 #pragma once
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * pednav stable C ABI, part 3 of 3: the app-facing engine API.
  *

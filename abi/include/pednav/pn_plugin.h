@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * pednav stable C ABI, part 2 of 3: what a plugin library exports.
  *

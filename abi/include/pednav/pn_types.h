@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * pednav stable C ABI, part 1 of 3: status codes, the error struct, and the
  * time-stamped records that flow between the engine, its plugins and the app.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * JNI glue between org.pednav.Engine and the app-facing C API (pn_engine.h).
  *

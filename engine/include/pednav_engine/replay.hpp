@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs a whole recording through an engine in one call: the C++ convenience
 // used by the CLI, the accuracy tests, the report and the benchmarks. It goes
 // through the same C API an app uses (pn_engine.h), so the plugins are the real

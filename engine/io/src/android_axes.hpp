@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Internal: Android device axes (x right, y up the screen, z out of the
 // screen) turned into forward-left-up for a phone held in portrait in front of
 // the walker: forward = y, left = -x, up = z (a 90 degree turn about z).

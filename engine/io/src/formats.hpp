@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Internal: the table of formats. Each reader says whether a file is its
 // format (from the header lines only) and reads it into a LogBuilder.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Internal: what every reader shares. A reader parses its layout and hands
 // samples, already in SI units and body axes, to a LogBuilder, which checks time
 // order, drops duplicates, counts bad rows and gaps, pairs separate accelerometer

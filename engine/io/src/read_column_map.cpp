@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Any delimited file described by a column map (docs/formats.md, "column-map"):
 // which column is what, its unit, and the sensor-to-body rotation. Keys are
 // checked strictly: an unknown key is an error naming its JSON pointer.

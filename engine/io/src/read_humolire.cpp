@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // senslogs two-file Android logs (humolire-phone): accelerometer-*.txt and
 // gyroscope-*.txt side by side. Six header lines (the file's own name, a blank,
 // the unit sentence, a link, a blank, the column names), then space-separated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IPIN competition logfiles (smartphone track): one ';'-separated line per
 // sample, '%' comments.
 //   ACCE;AppTimestamp(s);SensorTimestamp(s);Acc_X;Acc_Y;Acc_Z;Accuracy      m/s^2

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LORD MicroStrain SensorConnect CSV exports. Columns are "<device>:<channel>"
 // (e.g. "inertial-6253.76535:scaledAccelX") with an optional ":valid" flag
 // column after a channel.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Canonical CSV: header naming columns among t,ax,ay,az,gx,gy,gz,mx,my,mz,p
 // (s, m/s^2, rad/s, uT, Pa), '#' comments, extra columns ignored, empty
 // cells = no sample of that stream at that time (multi-rate files).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Format detection and dispatch, merged_records, and the small public helpers.
 #include <dirent.h>
 #include <sys/stat.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // x-io Technologies CSV exports (NGIMU "sensors.csv", x-IMU GUI
 // "CalInertialAndMag.csv"): headers "Name (unit)", e.g. "Time (s)",
 // "Gyroscope X (deg/s)", "Accelerometer X (g)", "Magnetometer X (uT)",

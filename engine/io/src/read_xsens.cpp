@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Xsens exports: MTw/Awinda tab-separated text and MT Manager CSV. A few
 // preamble lines ("Acquisition frequency: 100 Hz", "// Update Rate: 100.0Hz",
 // "// Start Time: ..."), then a header naming PacketCounter, SampleTimeFine,

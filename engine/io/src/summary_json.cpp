@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JSON of an input (pednav inspect --json, the "input" of a run summary) and
 // the run summary. Keys are listed in docs/formats.md; only additions allowed.
 #include <cmath>

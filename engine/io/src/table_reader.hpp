@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Internal: reads a delimited table whose columns map to streams, the shape of
 // most recordings (one header, one row per sample). A format reader fills a
 // TableSpec from the header it recognised; read_table does the rest.

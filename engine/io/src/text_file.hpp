@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Internal: a text file held in memory as lines; field helpers are public in
 // pednav_io/text_fields.hpp.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Track and step CSVs, GeoJSON and GPX.
 #include <cmath>
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "pednav_zupt_ins/ekf15.hpp"
 
 // The covariance kernels are also compiled for AVX (4 doubles per vector) and

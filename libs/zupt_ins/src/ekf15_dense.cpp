@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "pednav_zupt_ins/ekf15_dense.hpp"
 
 #include <Eigen/LU>

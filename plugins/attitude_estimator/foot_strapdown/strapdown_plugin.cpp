@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Foot strapdown attitude estimator: alignment on the opening still period,
 // then bias-compensated attitude integration with mid-interval rates; applies
 // the position filter's ATTITUDE_CORRECTION before the next sample.

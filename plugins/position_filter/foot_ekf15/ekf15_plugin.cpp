@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Foot position filter: velocity/position mechanization on the attitude
 // stream, 15-state error-state EKF with ZUPT, ZARU and HUPT, one position per
 // IMU sample, one stride per stance, attitude/gyro-bias feedback.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Foot stance detectors as step_detector plugins: one PN_REC_GAIT_PHASE per
 // IMU sample, stamped with the time of the sample it classifies, emitted
 // latency_ns() after it (centred windows).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PEDNAV_PLUGIN_LIBRARY(lib_id, lib_version, Plugin...): generates the
 // descriptors, the per-kind vtables with exception-catching trampolines, and
 // the one exported entry symbol pnp_entry_v1 of a plugin library (in a static

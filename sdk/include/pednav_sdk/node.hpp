@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // C++17 base classes for pednav plugin authors.
 //
 // Derive from the base class of your kind, override the typed hooks for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Strict, typed access to a plugin's "params" object.
 //
 // With a params schema (the plugin's kParamsSchema, params_schema.hpp), the

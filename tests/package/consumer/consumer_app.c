@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* An app on the installed C API: loads the consumer plugin from argv[1],
  * pushes 50 IMU samples and prints how many steps came out. */
 #include <stdio.h>

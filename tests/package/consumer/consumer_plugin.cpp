@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A third-party step detector: a STEP every `every_n` IMU samples.
 #include <pednav_sdk/library.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Internal: the track and truth readers split lines and parse numbers with the
 // rules of the recording readers (pednav_io/text_fields.hpp), and stop at the
 // first bad value.

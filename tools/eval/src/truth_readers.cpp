@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include <pednav_eval/truth_readers.hpp>
 
 #include <sys/stat.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Chest- or waist-mounted sensor trajectory: forward progression through the
 // walk's step points (a clamped cubic spline per walking bout), vertical bounce
 // at the step frequency, lateral sway at half of it, small pitch and roll

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The built-in walks used by the tests, the accuracy report and the README demo.
 #include <cmath>
 #include <stdexcept>

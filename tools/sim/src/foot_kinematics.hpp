@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Foot-mounted sensor trajectory: flat and still in stance; heel-off and
 // toe-off pitch, swing arc, heel strike (level floors only), foot flat.
 #pragma once

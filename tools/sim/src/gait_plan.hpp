@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The timeline of a walk: where the instrumented foot lands (one footprint per
 // stride, every waypoint is a footprint) and when it swings and stands.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact state of the simulated body (foot, chest or pelvis) at one instant,
 // before the sensor mounting rotation.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Smooth one-dimensional profiles with exact derivatives, the building blocks
 // of the simulated trajectories. Each returns value, first and second
 // derivative with respect to its argument.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A small deterministic random generator (xoshiro256** seeded by splitmix64,
 // Box-Muller normals): the same seed gives the same numbers on every platform
 // and standard library, unlike std::normal_distribution.

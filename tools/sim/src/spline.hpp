@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cubic spline through (t_i, y_i) with zero slope at both ends (clamped):
 // twice continuously differentiable, exact first and second derivatives.
 #pragma once

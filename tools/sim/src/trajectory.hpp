@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A body trajectory the sensor model samples: one implementation per mount.
 #pragma once
 

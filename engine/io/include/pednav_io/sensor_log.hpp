@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Readers: one call turns a recording into engine records (SI units, the
 // sensor's own right-handed axes, t_ns from the file's own time origin), plus
 // what was detected and what was wrong with the file. docs/formats.md lists

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fields of delimited text lines, as every pednav reader splits and parses them:
 // the recording readers of pednav_io and the track and truth readers of the
 // evaluation share these rules.

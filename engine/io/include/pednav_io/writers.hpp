@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writers for what a run produced: track and step CSVs, GeoJSON, GPX, and the
 // JSON run summary. docs/formats.md describes every file and key.
 #pragma once

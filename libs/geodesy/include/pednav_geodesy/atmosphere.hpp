@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The International Standard Atmosphere's troposphere (ISO 2533, below
 // 11 km): pressure at an altitude, and the barometric formula the other way,
 // the altitude of a pressure above a reference level. The simulated

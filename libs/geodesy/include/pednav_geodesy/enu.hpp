@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // WGS-84 latitude, longitude and height <-> local East-North-Up metres in the
 // tangent plane at an origin. Exact (through earth-centred coordinates): up is
 // the ellipsoid normal at the origin, so a point far away lies below the plane

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rotations: skew matrices, the rotation vector exponential and logarithm,
 // the Cayley transform, and unit quaternion products and rotations with the
 // bits of Eigen's. Frames: navigation ENU, body = the sensor's own

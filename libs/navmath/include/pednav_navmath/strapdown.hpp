@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Initial alignment and bias-compensated attitude integration of a strapdown
 // IMU (sensor axes, any orientation on the body; the foot attitude estimator
 // runs it on the shoe).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 15-state error-state Kalman filter covariance and estimate, hand-written
 // for speed: block-structured transition, selection measurements as scalar
 // Joseph-form updates, symmetric by construction, no allocation. Only the

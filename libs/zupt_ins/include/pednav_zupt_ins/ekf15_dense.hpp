@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The same 15-state error-state Kalman filter as ekf15.hpp, written the
 // textbook way with dense fixed-size Eigen matrices: a full 15 x 15 Phi,
 // P <- Phi P Phi^T + Q, a dense H, K = P H^T S^-1 and the Joseph form

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Velocity/position mechanization of a foot-mounted IMU on top of an external
 // attitude stream, with the 15-state error-state EKF (ekf15.hpp): ZUPT and
 // ZARU during stance, HUPT at the stance after a level-floor step, error

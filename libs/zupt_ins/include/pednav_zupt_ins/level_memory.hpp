@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The heights of the level floors a walk has stood on.
 //
 // HUPT (foot-imu-height-update-hupt eq. (5)) holds the height of a level floor

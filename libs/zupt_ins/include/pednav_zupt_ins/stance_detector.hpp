@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Foot stance (zero-velocity) detectors with windows in seconds, O(1) per
 // sample, no allocation after construction.
 //

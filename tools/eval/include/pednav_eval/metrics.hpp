@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accuracy metrics of a track against a ground truth (definitions in
 // docs/metrics.md), the alignment of the two frames, and their output as a
 // table or JSON.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An estimated track to score: what the engine wrote (track CSV) or returned
 // (pn_position_t), in metres in the ENU frame of the start point.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ground truth of a walk, whatever its kind: timed checkpoints (positions,
 // optionally height, floor and heading), a closed loop, step events, legs of
 // known length, and the walls of the map, all in one right-handed metric frame.

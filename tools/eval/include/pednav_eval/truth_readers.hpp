@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Readers for every kind of ground truth the project has (see docs/metrics.md
 // and each shared recording's SOURCE.md). Each throws std::runtime_error naming
 // the file (and line) on malformed input.

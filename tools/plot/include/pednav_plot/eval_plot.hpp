@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The standard figure of one walk from an evaluation: the track over the
 // truth (checkpoints or dense path) and the walls, and the horizontal error
 // against time.

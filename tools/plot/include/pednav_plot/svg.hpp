@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A minimal SVG writer: shapes in pixel coordinates, text escaped, numbers
 // written with fixed precision, non-finite coordinates dropped.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Plots people would rather look at than read: a walk's estimated track over
 // its truth and the map's walls (equal scale on both axes), and its error
 // against time, as one SVG document.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A walk to simulate: where the walker goes, how fast, and what surrounds it.
 //
 // Routes are JSON documents ("pednav-route/1", see docs/simulator.md) or one of

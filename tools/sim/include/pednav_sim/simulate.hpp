@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Walk simulator: exact kinematics of a foot-, chest- or waist-mounted IMU
 // along a route, the sensor records it would produce, and the exact truth.
 //
