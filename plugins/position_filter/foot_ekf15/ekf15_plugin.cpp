@@ -190,7 +190,7 @@ public:
     static constexpr const char* kVersion = "1.0.0";
     static constexpr const char* kDescription =
         "org.pednav.foot.ekf15 with textbook dense covariance algebra (15 x 15 Phi P Phi^T, Joseph form with a "
-        "dense H): the same track to round-off at about 17 times the instructions of the three foot plugins; a "
+        "dense H): the same track to round-off at about 16 times the instructions of the three foot plugins; a "
         "reference for checks and benchmarks";
     using FootInsFilter::FootInsFilter;
 };
