@@ -6,6 +6,7 @@
 
 #include <pednav/pn_engine.h>
 
+#include "describe.hpp"
 #include "engine.hpp"
 #include "geo_frame.hpp"
 
@@ -239,13 +240,7 @@ pn_status_t pn_engine_describe(const pn_engine_t* engine, char* buffer, size_t c
     } catch (const std::exception&) {
         return PN_E_INTERNAL;
     }
-    if (size) *size = text.size() + 1;
-    if (!buffer || capacity < text.size() + 1) {
-        if (buffer && capacity) buffer[0] = '\0';
-        return PN_E_INVALID_ARGUMENT;
-    }
-    std::memcpy(buffer, text.c_str(), text.size() + 1);
-    return PN_OK;
+    return pednav::engine::copy_text_out(text, buffer, capacity, size);
 }
 
 }  // extern "C"

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // pn_plugins_describe: what the plugin directories offer, with no config and
 // no engine. No exception leaves this file.
-#include <cstring>
 #include <new>
 #include <string>
 
@@ -43,16 +42,12 @@ pn_status_t pn_plugins_describe(const char* const* plugin_dirs, uint32_t dir_cou
         set_error(err, PN_E_INTERNAL, "plugins_describe", e.what());
         return PN_E_INTERNAL;
     }
-    if (size) *size = text.size() + 1;
-    if (!buffer || capacity < text.size() + 1) {
-        if (buffer && capacity) buffer[0] = '\0';
-        set_error(err, PN_E_INVALID_ARGUMENT, "buffer",
+    const pn_status_t st = pednav::engine::copy_text_out(text, buffer, capacity, size);
+    if (st != PN_OK)
+        set_error(err, st, "buffer",
                   "the description needs " + std::to_string(text.size() + 1) + " bytes, capacity is " +
                       std::to_string(buffer ? capacity : 0));
-        return PN_E_INVALID_ARGUMENT;
-    }
-    std::memcpy(buffer, text.c_str(), text.size() + 1);
-    return PN_OK;
+    return st;
 }
 
 }  // extern "C"

@@ -128,4 +128,14 @@ std::string Engine::describe_json() const {
     return j.dump(2);
 }
 
+pn_status_t copy_text_out(const std::string& text, char* buffer, size_t capacity, size_t* size) {
+    if (size) *size = text.size() + 1;
+    if (!buffer || capacity < text.size() + 1) {
+        if (buffer && capacity) buffer[0] = '\0';
+        return PN_E_INVALID_ARGUMENT;
+    }
+    std::memcpy(buffer, text.c_str(), text.size() + 1);
+    return PN_OK;
+}
+
 }  // namespace pednav::engine
