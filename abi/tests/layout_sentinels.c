@@ -115,7 +115,9 @@ PN_OFF(pn_gnss_t, h_accuracy_m, 48);
 PN_OFF(pn_gnss_t, v_accuracy_m, 56);
 PN_OFF(pn_gnss_t, vel_enu_mps, 64);
 PN_OFF(pn_gnss_t, utc_ns, 88);
-PN_SIZE(pn_gnss_t, 96);
+PN_OFF(pn_gnss_t, satellites, 96);
+PN_OFF(pn_gnss_t, fix_type, 100);
+PN_SIZE(pn_gnss_t, 104);
 
 PN_OFF(pn_gait_phase_t, stance, 24);
 PN_OFF(pn_gait_phase_t, reserved, 28);
@@ -125,7 +127,11 @@ PN_SIZE(pn_gait_phase_t, 40);
 PN_OFF(pn_step_t, t_start_ns, 24);
 PN_OFF(pn_step_t, accel_peak_to_peak_mps2, 32);
 PN_OFF(pn_step_t, frequency_hz, 40);
-PN_SIZE(pn_step_t, 48);
+PN_OFF(pn_step_t, accel_max_mps2, 48);
+PN_OFF(pn_step_t, accel_min_mps2, 56);
+PN_OFF(pn_step_t, motion_mode, 64);
+PN_OFF(pn_step_t, reserved, 68);
+PN_SIZE(pn_step_t, 72);
 
 PN_OFF(pn_attitude_t, q_enu_from_body, 24);
 PN_OFF(pn_attitude_t, heading_rad, 56);
@@ -143,7 +149,9 @@ PN_OFF(pn_position_t, cov_enu_m2, 72);
 PN_OFF(pn_position_t, heading_rad, 144);
 PN_OFF(pn_position_t, floor, 152);
 PN_OFF(pn_position_t, source, 156);
-PN_SIZE(pn_position_t, 160);
+PN_OFF(pn_position_t, live_particles, 160);
+PN_OFF(pn_position_t, recoveries, 164);
+PN_SIZE(pn_position_t, 168);
 
 PN_OFF(pn_stride_t, t_start_ns, 24);
 PN_OFF(pn_stride_t, displacement_enu_m, 32);

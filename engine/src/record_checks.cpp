@@ -2,6 +2,7 @@
 #include "record_checks.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 
 namespace pednav::engine {
@@ -104,8 +105,11 @@ struct Checker {
                 return finite("statistic", reinterpret_cast<const pn_gait_phase_t*>(h)->statistic);
             case PN_REC_STEP: {
                 auto* r = reinterpret_cast<const pn_step_t*>(h);
+                const bool has_extremes = r->header.struct_size >= offsetof(pn_step_t, accel_min_mps2) + sizeof(double);
                 return finite("accel_peak_to_peak_mps2", r->accel_peak_to_peak_mps2) &&
-                       finite("frequency_hz", r->frequency_hz);
+                       finite("frequency_hz", r->frequency_hz) &&
+                       (!has_extremes ||
+                        (finite("accel_max_mps2", r->accel_max_mps2) && finite("accel_min_mps2", r->accel_min_mps2)));
             }
             case PN_REC_ATTITUDE: {
                 auto* r = reinterpret_cast<const pn_attitude_t*>(h);

@@ -89,6 +89,11 @@ TEST_CASE("every refused record names the field, the element and the value") {
         r.frequency_hz = nan;
         CHECK(!record_values_ok(&r.header));
         CHECK(describe(find_value_problem(&r.header)) == "frequency_hz is nan");
+        r.frequency_hz = 1.8;
+        r.accel_min_mps2 = nan;  // a 1.1 field
+        CHECK(describe(find_value_problem(&r.header)) == "accel_min_mps2 is nan");
+        r.header.struct_size = PN_STEP_MIN_SIZE;  // a 1.0 producer: the tail is not its
+        CHECK(record_values_ok(&r.header));
     }
     SUBCASE("position covariance") {
         auto r = record<pn_position_t>(PN_REC_POSITION);

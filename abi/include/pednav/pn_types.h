@@ -152,6 +152,14 @@ typedef struct pn_baro_t {
 
 /* A satellite fix, WGS-84. */
 #define PN_GNSS_FLAG_HAS_VELOCITY 1u
+/* pn_gnss_t.fix_type: the NMEA GGA quality codes, except 0 (GGA: no fix,
+ * which is never a record) means unknown. */
+#define PN_GNSS_FIX_UNKNOWN 0
+#define PN_GNSS_FIX_AUTONOMOUS 1
+#define PN_GNSS_FIX_DIFFERENTIAL 2
+#define PN_GNSS_FIX_RTK_FIXED 4
+#define PN_GNSS_FIX_RTK_FLOAT 5
+#define PN_GNSS_FIX_DEAD_RECKONING 6
 typedef struct pn_gnss_t {
     pn_record_header_t header;
     double lat_deg;
@@ -161,6 +169,9 @@ typedef struct pn_gnss_t {
     double v_accuracy_m;      /* 1-sigma vertical */
     double vel_enu_mps[3];    /* valid when PN_GNSS_FLAG_HAS_VELOCITY */
     int64_t utc_ns;           /* UTC of the fix, 0 when unknown */
+    /* 1.1 (struct_size >= 104; read a shorter record's tail as zeros) */
+    int32_t satellites;       /* satellites used in the fix, 0 when unknown */
+    int32_t fix_type;         /* PN_GNSS_FIX_* */
 } pn_gnss_t;
 
 /* Per-sample gait phase from a foot stance detector. t_ns is the time of the
@@ -173,15 +184,28 @@ typedef struct pn_gait_phase_t {
 } pn_gait_phase_t;
 
 /* A step found by a step detector (chest, waist, or foot stance onset).
- * t_ns is the step's instant (peak or heel strike). */
+ * t_ns is the step's instant (peak or heel strike), the end of the interval
+ * [t_start_ns, t_ns] it covers. */
+#define PN_STEP_MODE_UNKNOWN 0
+#define PN_STEP_MODE_STRAIGHT 1   /* level walking, heading steady */
+#define PN_STEP_MODE_TURNING 2    /* level walking, heading changing */
+#define PN_STEP_MODE_UPSTAIRS 3
+#define PN_STEP_MODE_DOWNSTAIRS 4
+#define PN_STEP_MODE_STATIC 5     /* standing still (a step record that closes a pause) */
 typedef struct pn_step_t {
     pn_record_header_t header;
     int64_t t_start_ns;          /* start of the step interval */
-    double accel_peak_to_peak_mps2; /* filtered vertical acceleration range within the step */
+    double accel_peak_to_peak_mps2; /* filtered acceleration range within the step (accel_max - accel_min) */
     double frequency_hz;         /* 1 / step period, 0 when unknown */
+    /* 1.1 (struct_size >= 72) */
+    double accel_max_mps2;       /* largest filtered acceleration within the step (the detector's signal: vertical, or the norm minus gravity) */
+    double accel_min_mps2;       /* smallest filtered acceleration within the step */
+    int32_t motion_mode;         /* PN_STEP_MODE_* */
+    int32_t reserved;            /* 0 */
 } pn_step_t;
 
 /* Body attitude. */
+#define PN_ATTITUDE_FLAG_MAG_USED 1u /* 1.1: the magnetometer corrected this attitude (its field agreed with the local one) */
 typedef struct pn_attitude_t {
     pn_record_header_t header;
     double q_enu_from_body[4]; /* w, x, y, z */
@@ -202,6 +226,8 @@ typedef struct pn_attitude_correction_t {
 /* Position estimate. */
 #define PN_POSITION_FLAG_HAS_VELOCITY 1u
 #define PN_POSITION_FLAG_HAS_FLOOR 2u
+#define PN_POSITION_FLAG_HAS_PARTICLES 4u /* 1.1: live_particles is set (a particle filter's estimate) */
+#define PN_POSITION_FLAG_RECOVERED 8u     /* 1.1: the estimator lost track and restarted since its previous output */
 #define PN_POSITION_SOURCE_INERTIAL 0
 #define PN_POSITION_SOURCE_FUSED 1
 #define PN_POSITION_SOURCE_GNSS 2
@@ -214,6 +240,9 @@ typedef struct pn_position_t {
     double heading_rad;     /* clockwise from north */
     int32_t floor;          /* valid when PN_POSITION_FLAG_HAS_FLOOR; 0 = start floor */
     int32_t source;         /* PN_POSITION_SOURCE_* */
+    /* 1.1 (struct_size >= 168) */
+    uint32_t live_particles; /* valid when PN_POSITION_FLAG_HAS_PARTICLES */
+    uint32_t recoveries;     /* times the estimator restarted since the last reset */
 } pn_position_t;
 
 /* One step's displacement. Emitted once per step by a position filter. */
