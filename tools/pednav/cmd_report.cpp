@@ -35,7 +35,7 @@ namespace {
 using namespace pednav;
 
 constexpr const char* kUsage =
-    "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,waist] [--only TEXT] [--seed N]\n"
+    "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,handheld,waist] [--only TEXT] [--seed N]\n"
     "                     [--no-recordings] [--no-sim] [--plugin-dir DIR] [--patch JSON] [--detector NAME]\n"
     "       pednav report --suite full|quick|sim|sweep|tables|hupt|clip [--data DIR] [--plugin-dir DIR]\n"
     "                     [--patch JSON] [--detector NAME]\n"
@@ -297,7 +297,7 @@ const char* const pednav_cmd_report_usage = kUsage;
 
 int pednav_cmd_report(const std::vector<std::string>& args) {
     std::string out, data, only, suite = "accuracy", detector, accuracy_option;
-    std::vector<std::string> mounts{"foot", "chest", "waist"}, plugin_dirs{cli::default_plugin_dir()};
+    std::vector<std::string> mounts{"foot", "chest", "handheld", "waist"}, plugin_dirs{cli::default_plugin_dir()};
     uint64_t seed = 1;
     bool recordings = true, simulated = true, patched = false;
     nlohmann::json patch = nlohmann::json::object();

@@ -75,7 +75,7 @@ const std::vector<std::string>& humolire_walk_names() {
 RecordedWalk humolire_walk(const std::string& data_dir, const std::string& name) {
     RecordedWalk w;
     w.name = "humolire-" + name;
-    w.mount = "chest";
+    w.mount = "handheld";
     w.input = data_dir + "/humolire-phone/" + name;
     w.truth_kind = TruthKind::landmarks;
     w.truth_path = w.input;

@@ -28,7 +28,7 @@ namespace pednav::eval {
 // A shared recording with its ground truth.
 struct RecordedWalk {
     std::string name;         // as reported: "koroglu-33", "xio-short_walk", "ipol-1-1-lf", "humolire-user1_straight"
-    std::string mount;        // the pipeline that runs it: "foot", "waist" or "chest"
+    std::string mount;        // the pipeline that runs it: "foot", "waist", "chest" or "handheld"
     std::string input;        // the recording: a file, or a folder (humolire)
     TruthKind truth_kind = TruthKind::loop;
     std::string truth_path;   // the truth's file or folder; empty for a loop
@@ -58,7 +58,7 @@ constexpr double kIpolRateHz = 100.0;           // of the annotations' sample in
 constexpr double kIpolLegM = 10.0;
 RecordedWalk ipol_walk(const std::string& data_dir, const std::string& trial, const std::string& part);
 
-// humolire-phone: <name>/, a handheld phone (chest pipeline), landmarks on a
+// humolire-phone: <name>/, a handheld phone (handheld pipeline), landmarks on a
 // map; the engine is started at the known start point and heading.
 const std::vector<std::string>& humolire_walk_names();
 RecordedWalk humolire_walk(const std::string& data_dir, const std::string& name);

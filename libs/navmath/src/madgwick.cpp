@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "pednav_navmath/madgwick.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "pednav_navmath/alignment.hpp"
+#include "pednav_navmath/heading.hpp"
+
+namespace pednav::navmath {
+
+Madgwick::Madgwick(const MadgwickConfig& c) : c_(c) {
+    if (!(c.gain_radps >= 0)) throw std::invalid_argument("madgwick: gain_radps must not be negative");
+    if (!(c.gyro_bias_gain_radps >= 0))
+        throw std::invalid_argument("madgwick: gyro_bias_gain_radps must not be negative");
+    if (!(c.init_gain_radps >= 0)) throw std::invalid_argument("madgwick: init_gain_radps must not be negative");
+    if (!(c.init_s >= 0)) throw std::invalid_argument("madgwick: init_s must not be negative");
+    if (!(c.max_dt_s > 0)) throw std::invalid_argument("madgwick: max_dt_s must be positive");
+    sin_decl_ = std::sin(c.declination_deg * M_PI / 180.0);
+    cos_decl_ = std::cos(c.declination_deg * M_PI / 180.0);
+}
+
+void Madgwick::reset() {
+    q_ = Quat::Identity();
+    bias_.setZero();
+    aligned_ = started_ = false;
+    t_ns_ = t0_ns_ = 0;
+}
+
+void Madgwick::align(int64_t t_ns, const Vec3& accel_body, double heading_rad) {
+    q_ = level_attitude(accel_body, heading_rad);
+    aligned_ = started_ = true;
+    t_ns_ = t0_ns_ = t_ns;
+}
+
+void Madgwick::set_attitude(const Quat& q) {
+    q_ = q.normalized();
+    aligned_ = true;
+}
+
+void Madgwick::set_heading(double heading_rad) {
+    // Heading is clockwise, a rotation about up counter-clockwise.
+    const double turn = -wrap_pi(heading_rad - heading_of(q_));
+    q_ = (Quat(std::cos(0.5 * turn), 0.0, 0.0, std::sin(0.5 * turn)) * q_).normalized();
+}
+
+Vec3 Madgwick::up_body() const {
+    const double w = q_.w(), x = q_.x(), y = q_.y(), z = q_.z();
+    return Vec3(2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y));
+}
+
+bool Madgwick::update(int64_t t_ns, const Vec3& gyro, const Vec3& accel, const Vec3* mag) {
+    const double an2 = accel.squaredNorm();
+    if (!(an2 > 0)) return false;
+    if (!started_) {  // aligned by set_attitude: the clock starts here
+        started_ = true;
+        t_ns_ = t0_ns_ = t_ns;
+    }
+    double dt = static_cast<double>(t_ns - t_ns_) * 1e-9;
+    if (dt > c_.max_dt_s) dt = c_.max_dt_s;
+    if (dt < 0) dt = 0;
+    t_ns_ = t_ns;
+    const double w = q_.w(), x = q_.x(), y = q_.y(), z = q_.z();
+    // R(q) entries, row by row (r_ij: ENU axis i, body axis j).
+    const double xx = x * x, yy = y * y, zz = z * z, xy = x * y, xz = x * z, yz = y * z, wx = w * x, wy = w * y,
+                 wz = w * z;
+    const double r00 = 1 - 2 * (yy + zz), r01 = 2 * (xy - wz), r02 = 2 * (xz + wy);
+    const double r10 = 2 * (xy + wz), r11 = 1 - 2 * (xx + zz), r12 = 2 * (yz - wx);
+    const double r20 = 2 * (xz - wy), r21 = 2 * (yz + wx), r22 = 1 - 2 * (xx + yy);
+    const double ia = 1.0 / std::sqrt(an2);
+    // Gravity part, d = (0, 0, 1): e = R^T d - a_hat = row 2 of R - a_hat.
+    const double e0 = r20 - accel.x() * ia, e1 = r21 - accel.y() * ia, e2 = r22 - accel.z() * ia;
+    // G2(e) = sum_i e_i d(r_2i)/dq.
+    double gw = -2 * y * e0 + 2 * x * e1;
+    double gx = 2 * z * e0 + 2 * w * e1 - 4 * x * e2;
+    double gy = -2 * w * e0 + 2 * z * e1 - 4 * y * e2;
+    double gz = 2 * x * e0 + 2 * y * e1;
+    if (mag) {
+        const double mn2 = mag->squaredNorm();
+        if (mn2 > 0) {
+            const double im = 1.0 / std::sqrt(mn2);
+            const double mx = mag->x() * im, my = mag->y() * im, mz = mag->z() * im;
+            // The field in ENU, h = R m; the reference keeps its dip and points at magnetic north.
+            const double he = r00 * mx + r01 * my + r02 * mz, hn = r10 * mx + r11 * my + r12 * mz,
+                         hu = r20 * mx + r21 * my + r22 * mz;
+            const double bh = std::sqrt(he * he + hn * hn);
+            const double dx = bh * sin_decl_, dy = bh * cos_decl_, dz = hu;
+            // e = R^T d - m_hat, body_i = dx r0i + dy r1i + dz r2i.
+            const double f0 = dx * r00 + dy * r10 + dz * r20 - mx;
+            const double f1 = dx * r01 + dy * r11 + dz * r21 - my;
+            const double f2 = dx * r02 + dy * r12 + dz * r22 - mz;
+            // sum_j d_j G_j(f), G_j(f) = sum_i f_i d(r_ji)/dq (the rows of R differentiated above).
+            gw += dx * (-2 * z * f1 + 2 * y * f2) + dy * (2 * z * f0 - 2 * x * f2) + dz * (-2 * y * f0 + 2 * x * f1);
+            gx += dx * (2 * y * f1 + 2 * z * f2) + dy * (2 * y * f0 - 4 * x * f1 - 2 * w * f2) +
+                  dz * (2 * z * f0 + 2 * w * f1 - 4 * x * f2);
+            gy += dx * (-4 * y * f0 + 2 * x * f1 + 2 * w * f2) + dy * (2 * x * f0 + 2 * z * f2) +
+                  dz * (-2 * w * f0 + 2 * z * f1 - 4 * y * f2);
+            gz += dx * (-4 * z * f0 - 2 * w * f1 + 2 * x * f2) + dy * (2 * w * f0 - 4 * z * f1 + 2 * y * f2) +
+                  dz * (2 * x * f0 + 2 * y * f1);
+        }
+    }
+    const double g2 = gw * gw + gx * gx + gy * gy + gz * gz;
+    if (g2 > 0) {
+        const double ig = 1.0 / std::sqrt(g2);
+        gw *= ig, gx *= ig, gy *= ig, gz *= ig;
+        if (c_.gyro_bias_gain_radps > 0) {
+            // omega_eps = 2 q* (x) grad_hat, vector part.
+            const double ex = 2 * (w * gx - x * gw - y * gz + z * gy);
+            const double ey = 2 * (w * gy + x * gz - y * gw - z * gx);
+            const double ez = 2 * (w * gz - x * gy + y * gx - z * gw);
+            bias_ += c_.gyro_bias_gain_radps * dt * Vec3(ex, ey, ez);
+        }
+    }
+    const double beta =
+        static_cast<double>(t_ns - t0_ns_) * 1e-9 < c_.init_s ? c_.init_gain_radps : c_.gain_radps;
+    const double ox = gyro.x() - bias_.x(), oy = gyro.y() - bias_.y(), oz = gyro.z() - bias_.z();
+    // q_dot = 1/2 q (x) (0, omega) - beta grad_hat.
+    const double qw = 0.5 * (-x * ox - y * oy - z * oz) - beta * gw;
+    const double qx = 0.5 * (w * ox + y * oz - z * oy) - beta * gx;
+    const double qy = 0.5 * (w * oy - x * oz + z * ox) - beta * gy;
+    const double qz = 0.5 * (w * oz + x * oy - y * ox) - beta * gz;
+    double nw = w + qw * dt, nx = x + qx * dt, ny = y + qy * dt, nz = z + qz * dt;
+    const double in = 1.0 / std::sqrt(nw * nw + nx * nx + ny * ny + nz * nz);
+    q_ = Quat(nw * in, nx * in, ny * in, nz * in);
+    return true;
+}
+
+}  // namespace pednav::navmath
