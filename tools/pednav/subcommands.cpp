@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "subcommands.hpp"
 
+#include "cmd_calibrate.hpp"
 #include "cmd_demo.hpp"
 #include "cmd_eval.hpp"
 #include "cmd_inspect.hpp"
@@ -20,6 +21,8 @@ const std::vector<PednavSubcommand>& pednav_subcommands() {
         {"eval", &pednav_cmd_eval, pednav_cmd_eval_usage, "score a track against a ground truth"},
         {"report", &pednav_cmd_report, pednav_cmd_report_usage,
          "accuracy of every recording and simulated walk"},
+        {"calibrate", &pednav_cmd_calibrate, pednav_cmd_calibrate_usage,
+         "fit a step position filter's constants to walks of known length"},
     };
     return table;
 }

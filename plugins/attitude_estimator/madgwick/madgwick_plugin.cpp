@@ -9,7 +9,8 @@
 // Start: up from the first accelerometer reading, heading initial_heading_deg,
 // or the attitude the app gives (set_attitude). In the MARG form the first
 // accepted magnetometer reading within init_s sets the heading at once
-// (tilt-compensated, plus the declination).
+// (tilt-compensated, plus the declination); attitudes are emitted from then
+// on (or from init_s without one).
 #include <cmath>
 
 #include <pednav_navmath/alignment.hpp>
@@ -93,6 +94,10 @@ public:
             if (!filter_.update(t, w, a, use_mag ? &mag_ : nullptr)) return;
             mag_used_ = use_mag;
         }
+        // In the MARG form the start heading is not known until the first
+        // accepted magnetometer reading (or init_s without one): no attitude
+        // before, so that nothing downstream takes the provisional heading.
+        if (marg_ && !heading_from_mag_ && !app_attitude_ && t - t_start_ns_ < init_ns_) return;
         auto r = make_record<pn_attitude_t>(t);
         const Quat& q = filter_.q();
         r.q_enu_from_body[0] = q.w();

@@ -35,8 +35,8 @@ public:
   "properties": {
     "step_vector_k": {"type": "number", "minimum": -20, "maximum": 20, "default": -4.0,
       "description": "K of eq. (1): the displacement per metre of double-integrated acceleration; negative (the integral points backwards), per user (pednav calibrate)"},
-    "remove_mean_accel": {"type": "boolean", "default": true,
-      "description": "subtract the step's mean horizontal acceleration before integrating (removes the gravity a tilt error leaks into the horizontal)"},
+    "remove_mean_accel": {"type": "boolean", "default": false,
+      "description": "subtract the step's mean horizontal acceleration before integrating (takes out gravity leaked by a tilt error, but also the mean deceleration of the step that eq. (1) measures); false = eq. (1) as printed"},
     "max_step_s": {"type": "number", "x-unit": "s", "minimum": 0.1, "maximum": 10, "default": 1.5,
       "description": "samples are kept for a step at most this long before its end"},
     )json";

@@ -33,13 +33,13 @@ inline constexpr char kCommonParams[] = R"json(
       "description": "standard deviation of a step's direction (the stride covariance)"},
     "baro_reference_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 600, "default": 5,
       "description": "barometer: the reference pressure (altitude 0, floor 0) is the mean over the first this long"},
-    "baro_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 60, "default": 0.5,
+    "baro_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 60, "default": 0.3,
       "description": "barometer: time constant of the altitude low-pass"},
     "baro_rate_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 60, "default": 1.0,
       "description": "barometer: time constant of the vertical rate's low-pass"},
     "baro_floor_height_m": {"type": "number", "x-unit": "m", "minimum": 0.5, "maximum": 20, "default": 3.5,
       "description": "barometer: height of one floor"},
-    "baro_floor_hysteresis_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.5,
+    "baro_floor_hysteresis_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.1,
       "description": "barometer: beyond half a floor by this much before the floor changes"},
     "baro_max_gap_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 5,
       "description": "barometer: a longer gap between readings restarts its filters"})json";
@@ -81,7 +81,14 @@ public:
     void on_imu(const pn_imu_t& r) override { join_.add(r, sample()); }
     void on_attitude(const pn_attitude_t& r) override { join_.add(r, sample()); }
     void on_step(const pn_step_t& r) override { join_.add(r, sample()); }
-    void on_baro(const pn_baro_t& b) override { altimeter_.push(b.header.t_ns, b.pressure_pa); }
+    void on_baro(const pn_baro_t& b) override {
+        altimeter_.push(b.header.t_ns, b.pressure_pa);
+        has_baro_ = true;
+        // A floor change between steps is a position of its own (at the last
+        // step's place), so the floor is not late by up to a step.
+        if (altimeter_.ready() && altimeter_.floor() != floor_out_ && b.header.t_ns > t_out_ns_)
+            emit_position(b.header.t_ns, last_heading_out_rad_);
+    }
     void on_flush() override { join_.flush(sample()); }
     bool set_start(const double pos[3], double heading_rad) override {
         for (int i = 0; i < 3; ++i) pos_[i] = start_[i] = pos[i];
@@ -137,15 +144,23 @@ private:
                            step_displacement(step, heading, de, dn);
         if (altimeter_.ready()) pos_[2] = start_[2] + altimeter_.altitude_m();
         if (moved) emit_stride(step, heading, de, dn);
-        auto r = make_record<pn_position_t>(step.header.t_ns);
+        if (step.header.t_ns >= t_out_ns_) emit_position(step.header.t_ns, std::isfinite(heading) ? heading : 0.0);
+    }
+    void emit_position(int64_t t_ns, double heading_rad) {
+        if (altimeter_.ready()) pos_[2] = start_[2] + altimeter_.altitude_m();
+        auto r = make_record<pn_position_t>(t_ns);
         for (int i = 0; i < 3; ++i) r.pos_enu_m[i] = pos_[i];
         for (int i = 0; i < 9; ++i) r.cov_enu_m2[i] = cov_[i];
-        r.heading_rad = std::isfinite(heading) ? heading : 0.0;
+        r.heading_rad = heading_rad;
         r.source = PN_POSITION_SOURCE_INERTIAL;
-        if (altimeter_.ready()) {
+        // With a barometer the floor is known from the start: floor 0 while
+        // the altimeter learns its reference there.
+        if (has_baro_) {
             r.header.flags |= PN_POSITION_FLAG_HAS_FLOOR;
-            r.floor = altimeter_.floor();
+            r.floor = floor_out_ = altimeter_.ready() ? altimeter_.floor() : 0;
         }
+        t_out_ns_ = t_ns;
+        last_heading_out_rad_ = heading_rad;
         emit(r);
     }
     void emit_stride(const pn_step_t& step, double heading, double de, double dn) {
@@ -185,7 +200,10 @@ private:
     Join join_;
     double start_[3] = {0, 0, 0}, pos_[3] = {0, 0, 0}, cov_[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     double start_heading_rad_ = NAN, yaw_align_rad_ = 0.0;
-    bool aligned_ = false;
+    bool aligned_ = false, has_baro_ = false;
+    int32_t floor_out_ = 0;
+    int64_t t_out_ns_ = INT64_MIN;
+    double last_heading_out_rad_ = 0.0;
     double sum_sin_ = 0, sum_cos_ = 0, last_heading_rad_ = NAN, prev_heading_rad_ = NAN, last_stride_z_ = 0;
     int32_t stride_index_ = 0;
 };

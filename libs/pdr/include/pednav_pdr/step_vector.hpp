@@ -11,10 +11,10 @@
 // per user. The direction comes from the acceleration, not from the way the
 // sensor points, so the walker may face away from it.
 //
-// Removing the step's mean acceleration first (remove_mean) takes out what a
-// tilt error leaks of gravity into the horizontal (1 deg: 0.17 m/s^2, 2 cm
-// over a 0.5 s step before K); over a step of steady walking the true mean
-// is close to 0, so the integral keeps its shape.
+// remove_mean subtracts the step's mean acceleration first. That takes out
+// the gravity a tilt error leaks into the horizontal (1 deg: 0.17 m/s^2), but
+// also the step's mean deceleration, which is much of what eq. (1) measures:
+// on the humolire phone walks the step vectors then lose their direction.
 #pragma once
 
 #include <cstddef>

@@ -94,13 +94,18 @@ struct SimulatedWalk {
     double accel_bias_walk_scale = 1.0;  // and this the accelerometer bias random walk once more
     bool gyro_scale_errors = true;       // false: the gyro has no scale-factor error
     bool with_baro = false, with_gnss = false;  // IMU and magnetometer only unless set
+    double surge_m = NAN;        // the trunk's forward oscillation (SimOptions::surge_m); NaN = the mount's own
+    double time_jitter_s = 0.0;  // irregular sample times (SimOptions::time_jitter_s)
     Gait gait{"route", 0.0, 0.0, 0.0, 0.0};
 };
 sim::SimOptions sim_options(const SimulatedWalk& walk);
 sim::Route sim_route(const SimulatedWalk& walk);  // throws for an unknown route
 
 // pednav report: every built-in route with `mount`, the simulator's defaults
-// (consumer-grade errors, barometer and GNSS) and `seed`.
+// (consumer-grade errors, barometer and GNSS) and `seed`; a chest walks with
+// the trunk surge of the handheld mount (kChestSurgeM), which the chest
+// preset's step vector measures.
+constexpr double kChestSurgeM = 0.02;
 std::vector<SimulatedWalk> builtin_sim_walks(const std::string& mount, uint64_t seed);
 
 // The foot suites' walks (pednav report --suite, docs/foot-pipeline.md), each
