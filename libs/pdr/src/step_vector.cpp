@@ -2,6 +2,7 @@
 #include "pednav_pdr/step_vector.hpp"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace pednav::pdr {
 
@@ -31,24 +32,30 @@ PlaneVector double_integral(const HorizontalSample* s, size_t n, bool remove_mea
     return d;
 }
 
-StepVectorBuffer::StepVectorBuffer(size_t max_samples) : max_samples_(std::max<size_t>(max_samples, 2)) {
-    samples_.reserve(max_samples_);
+StepVectorBuffer::StepVectorBuffer(double max_span_s)
+    : max_span_ns_(static_cast<int64_t>(std::max(max_span_s, 0.01) * 1e9)) {
+    samples_.reserve(1024);
 }
 
 void StepVectorBuffer::add(const HorizontalSample& s) {
-    if (samples_.size() >= max_samples_) samples_.erase(samples_.begin());
+    while (first_ < samples_.size() && samples_[first_].t_ns < s.t_ns - max_span_ns_) ++first_;
+    if (first_ > 0 && first_ * 2 >= samples_.size()) {  // drop the old prefix, amortised O(1)
+        samples_.erase(samples_.begin(), samples_.begin() + static_cast<std::ptrdiff_t>(first_));
+        first_ = 0;
+    }
     samples_.push_back(s);
 }
 
 PlaneVector StepVectorBuffer::close(int64_t t_start_ns, int64_t t_end_ns, bool remove_mean) {
-    auto first = std::lower_bound(samples_.begin(), samples_.end(), t_start_ns,
-                                  [](const HorizontalSample& a, int64_t t) { return a.t_ns < t; });
-    auto end = std::upper_bound(samples_.begin(), samples_.end(), t_end_ns,
-                                [](int64_t t, const HorizontalSample& a) { return t < a.t_ns; });
+    const auto begin = samples_.begin() + static_cast<std::ptrdiff_t>(first_);
+    const auto first = std::lower_bound(begin, samples_.end(), t_start_ns,
+                                        [](const HorizontalSample& a, int64_t t) { return a.t_ns < t; });
+    const auto end = std::upper_bound(begin, samples_.end(), t_end_ns,
+                                      [](int64_t t, const HorizontalSample& a) { return t < a.t_ns; });
     PlaneVector d;
     if (first < end) d = double_integral(&*first, static_cast<size_t>(end - first), remove_mean);
     // The step's last sample is the next step's first.
-    if (end > samples_.begin()) samples_.erase(samples_.begin(), end - 1);
+    if (end > begin) first_ = static_cast<size_t>(end - 1 - samples_.begin());
     return d;
 }
 

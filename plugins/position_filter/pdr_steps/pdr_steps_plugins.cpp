@@ -46,11 +46,11 @@ public:
     static constexpr auto kSchema = pednav::plugins::join_schema(kSchemaHead, kSchemaTail);
     static constexpr const char* kParamsSchema = kSchema.text;
 
-    StepVector(Params& p, const CreateContext& ctx)
+    StepVector(Params& p, const CreateContext&)
         : StepFilterBase(p),
           k_(p.number("step_vector_k")),
           remove_mean_(p.boolean("remove_mean_accel")),
-          buffer_(static_cast<size_t>(std::ceil(p.number("max_step_s") * std::max(ctx.imu_rate_hz, 100.0) * 2.0))) {}
+          buffer_(p.number("max_step_s")) {}
 
 private:
     void on_attitude_sample(const pn_imu_t* imu, const pn_attitude_t& att, double) override {

@@ -40,19 +40,21 @@ PlaneVector double_integral(const HorizontalSample* samples, size_t count, bool 
 // it is known (a step detector reports a step after its end).
 class StepVectorBuffer {
 public:
-    // Keeps at most max_samples (the oldest are dropped beyond it).
-    explicit StepVectorBuffer(size_t max_samples);
+    // Keeps the samples of the last max_span_s (older ones are dropped as
+    // new ones come): the longest step it can integrate.
+    explicit StepVectorBuffer(double max_span_s);
     void add(const HorizontalSample& s);
     // The double integral over the samples in [t_start_ns, t_end_ns]; drops
     // every sample up to t_end_ns, except the last one within the step,
     // which starts the next.
     PlaneVector close(int64_t t_start_ns, int64_t t_end_ns, bool remove_mean);
-    void clear() { samples_.clear(); }
-    size_t size() const { return samples_.size(); }
+    void clear() { samples_.clear(), first_ = 0; }
+    size_t size() const { return samples_.size() - first_; }
 
 private:
     std::vector<HorizontalSample> samples_;
-    size_t max_samples_;
+    size_t first_ = 0;  // samples_[first_..] are held; the prefix is dropped in bulk
+    int64_t max_span_ns_;
 };
 
 }  // namespace pednav::pdr
