@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <pednav_chest_eval/calibrated_config.hpp>
 #include <pednav_eval/calibration.hpp>
 #include <pednav_io/sensor_log.hpp>
 
@@ -88,11 +89,10 @@ int pednav_cmd_calibrate(const std::vector<std::string>& argv) {
         nlohmann::json config = nlohmann::json::parse(options.config_json, nullptr, false);
         if (config.is_discarded() || !config.is_object())
             throw std::runtime_error((config_path.empty() ? mount + " preset" : config_path) + ": not a JSON object");
-        const nlohmann::json::json_pointer where("/pipelines/" + mount + "/position_filter/params");
-        if (!config.contains(where))
-            throw std::runtime_error("the config has no " + where.to_string() + " to calibrate");
         if (const std::string problem = config_problem(options); !problem.empty())
             throw std::runtime_error("config: " + problem);
+        const nlohmann::json::json_pointer where("/pipelines/" + mount + "/position_filter/params");
+        const nlohmann::json params = chest_eval::position_filter_params(config, mount, options.plugin_dirs);
         std::vector<eval::CalibrationRun> runs;
         for (const WalkArg& w : walks) {
             eval::CalibrationRun run;
@@ -107,7 +107,7 @@ int pednav_cmd_calibrate(const std::vector<std::string>& argv) {
             std::fprintf(stderr, "%s: %zu steps, %zu strides\n", w.input.c_str(), r.steps.size(), r.strides.size());
             runs.push_back(std::move(run));
         }
-        const eval::CalibrationResult result = eval::calibrate_position_filter(config.at(where), runs, fit);
+        const eval::CalibrationResult result = eval::calibrate_position_filter(params, runs, fit);
         for (const auto& [key, value] : result.params.items()) config[where][key] = value;
         std::ofstream file(out);
         file << config.dump(2) << "\n";

@@ -8,6 +8,7 @@
 
 #include <pednav_chest_eval/calibrated_config.hpp>
 #include <pednav_chest_eval/walk_scores.hpp>
+#include <pednav_eval/config_patch.hpp>
 #include <pednav_eval/metrics.hpp>
 #include <pednav_eval/walks.hpp>
 
@@ -21,7 +22,8 @@ const std::vector<std::string> kSimRoutes = {"corridor_loop", "stairs", "buildin
 constexpr int kSeeds = 3;
 
 struct Preset {
-    const char* mount;
+    std::string label;  // as printed
+    const char* mount;  // the pipeline's key in the config
     const std::string* json;
 };
 
@@ -38,7 +40,7 @@ eval::SimulatedWalk calibration_sim(const std::string& mount) {
 void print_humolire(const ChestSuiteSetup& s, const Preset& p) {
     const std::vector<std::string>& names = eval::humolire_walk_names();
     for (bool calibrated : {false, true}) {
-        std::printf("humolire-phone, %s preset%s, no map: error at each landmark (m)\n", p.mount,
+        std::printf("humolire-phone, %s%s, no map: error at each landmark (m)\n", p.label.c_str(),
                     calibrated ? ", calibrated on the other walks' landmarks" : "");
         std::printf("  %-16s %9s %6s %6s %6s %6s %8s\n", "walk", "landmarks", "mean", "median", "p75", "max", "dist(m)");
         std::vector<double> p75s, means;
@@ -66,10 +68,10 @@ void print_humolire(const ChestSuiteSetup& s, const Preset& p) {
 }
 
 void print_biba(const ChestSuiteSetup& s, const Preset& p) {
-    std::printf("biba-chest-xsens, %s preset (no truth: steps, distance, magnetometer use, end point)\n", p.mount);
+    std::printf("biba-chest-xsens, %s (no truth: steps, distance, magnetometer use, end point)\n", p.label.c_str());
     for (const char* name : {"kar_to_rita", "rita_to_kar", "K_calibration_test1-000"}) {
         const std::string path = s.data_dir + "/biba-chest-xsens/" + name + ".txt";
-        const ReplayResult r = chest_eval::run_recording(path, p.json ? *p.json : "", s.plugin_dirs);
+        const ReplayResult r = chest_eval::run_recording(path, *p.json, s.plugin_dirs);
         double d = 0;
         for (const pn_stride_t& st : r.strides) d += st.length_m;
         const pn_position_t& last = r.positions.back();
@@ -87,9 +89,10 @@ void print_sims(const ChestSuiteSetup& s, const Preset& p) {
             const chest_eval::Calibrated c =
                 chest_eval::calibrate_on_sims(cfg, p.mount, {calibration_sim(p.mount)}, s.plugin_dirs);
             cfg = c.config_json;
-            std::printf("simulated %s walks, calibrated on corridor_loop seed 9: %s\n", p.mount, c.summary.c_str());
+            std::printf("simulated %s walks, %s calibrated on corridor_loop seed 9: %s\n", p.mount, p.label.c_str(),
+                        c.summary.c_str());
         } else {
-            std::printf("simulated %s walks, %s preset as is\n", p.mount, p.mount);
+            std::printf("simulated %s walks, %s as is\n", p.mount, p.label.c_str());
         }
         std::printf("  %-14s %4s %6s %6s %6s %7s %9s %8s %7s %7s\n", "route", "seed", "mean", "p75", "max", "floor%",
                     "closure", "dist err", "steps", "mag%");
@@ -116,7 +119,8 @@ void print_sims(const ChestSuiteSetup& s, const Preset& p) {
 }
 
 void print_rates(const ChestSuiteSetup& s, const Preset& p) {
-    std::printf("%s steps on corridor_loop by IMU rate and sample-time jitter (seed 1)\n", p.mount);
+    std::printf("%s, %s walks: steps on corridor_loop by IMU rate and sample-time jitter (seed 1)\n",
+                p.label.c_str(), p.mount);
     for (double rate : {50.0, 100.0, 200.0, 500.0})
         for (double jitter_fraction : {0.0, 0.4}) {
             eval::SimulatedWalk w = eval::builtin_sim_walks(p.mount, 1).front();
@@ -132,11 +136,16 @@ void print_rates(const ChestSuiteSetup& s, const Preset& p) {
 }  // namespace
 
 void run_chest_suite(const ChestSuiteSetup& s) {
-    const Preset presets[] = {{"handheld", &s.handheld_preset_json}, {"chest", &s.chest_preset_json}};
-    for (const Preset& p : presets) print_humolire(s, p);
-    for (const Preset& p : presets) print_biba(s, p);
-    for (const Preset& p : presets) print_sims(s, p);
-    for (const Preset& p : presets) print_rates(s, p);
+    // The paper's step displacement on the chest pipeline, for comparison.
+    const std::string step_vector = eval::patched_config(
+        s.chest_preset_json, {{"pipelines", {{"chest", {{"position_filter", {{"plugin", "org.pednav.pdr.step_vector"}}}}}}}});
+    const Preset handheld{"handheld preset", "handheld", &s.handheld_preset_json};
+    const Preset chest{"chest preset", "chest", &s.chest_preset_json};
+    const Preset vector{"chest preset with the step vector", "chest", &step_vector};
+    for (const Preset* p : {&handheld, &chest, &vector}) print_humolire(s, *p);
+    for (const Preset* p : {&chest, &vector, &handheld}) print_biba(s, *p);
+    for (const Preset* p : {&handheld, &chest, &vector}) print_sims(s, *p);
+    for (const Preset* p : {&handheld, &chest}) print_rates(s, *p);
 }
 
 }  // namespace pednav::cli

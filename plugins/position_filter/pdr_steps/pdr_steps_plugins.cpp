@@ -37,8 +37,6 @@ public:
       "description": "K of eq. (1): the displacement per metre of double-integrated acceleration; negative (the integral points backwards), per user (pednav calibrate)"},
     "remove_mean_accel": {"type": "boolean", "default": false,
       "description": "subtract the step's mean horizontal acceleration before integrating (takes out gravity leaked by a tilt error, but also the mean deceleration of the step that eq. (1) measures); false = eq. (1) as printed"},
-    "max_step_s": {"type": "number", "x-unit": "s", "minimum": 0.1, "maximum": 10, "default": 1.5,
-      "description": "samples are kept for a step at most this long before its end"},
     )json";
     static constexpr char kSchemaTail[] = R"json(
   }
@@ -47,26 +45,14 @@ public:
     static constexpr const char* kParamsSchema = kSchema.text;
 
     StepVector(Params& p, const CreateContext&)
-        : StepFilterBase(p),
-          k_(p.number("step_vector_k")),
-          remove_mean_(p.boolean("remove_mean_accel")),
-          buffer_(p.number("max_step_s")) {}
+        : StepFilterBase(p, true), k_(p.number("step_vector_k")), remove_mean_(p.boolean("remove_mean_accel")) {}
 
 private:
-    void on_attitude_sample(const pn_imu_t* imu, const pn_attitude_t& att, double) override {
-        if (!imu) return;
-        const double w = att.q_enu_from_body[0], x = att.q_enu_from_body[1], y = att.q_enu_from_body[2],
-                     z = att.q_enu_from_body[3];
-        const double* f = imu->accel_mps2;
-        // The first two rows of R(q) times the specific force: gravity has no horizontal part.
-        const double e = (1 - 2 * (y * y + z * z)) * f[0] + 2 * (x * y - w * z) * f[1] + 2 * (x * z + w * y) * f[2];
-        const double n = 2 * (x * y + w * z) * f[0] + (1 - 2 * (x * x + z * z)) * f[1] + 2 * (y * z - w * x) * f[2];
-        buffer_.add({att.header.t_ns, e, n});
-    }
-    bool step_displacement(const pn_step_t& step, double, double& east_m, double& north_m) override {
-        const pednav::pdr::PlaneVector d = buffer_.close(step.t_start_ns, step.header.t_ns, remove_mean_);
+    bool remove_mean_accel() const override { return remove_mean_; }
+    bool step_displacement(const pn_step_t&, double, const pednav::pdr::PlaneVector& d, double psi, double& east_m,
+                           double& north_m) override {
         // K times the integral, turned from the attitude's frame to the start-aligned one (clockwise).
-        const double psi = yaw_align_rad(), c = std::cos(psi), s = std::sin(psi);
+        const double c = std::cos(psi), s = std::sin(psi);
         const double e = k_ * d.east_m, n = k_ * d.north_m;
         east_m = e * c + n * s;
         north_m = -e * s + n * c;
@@ -75,7 +61,6 @@ private:
 
     double k_;
     bool remove_mean_;
-    pednav::pdr::StepVectorBuffer buffer_;
 };
 
 class StepModel : public StepFilterBase {
@@ -112,8 +97,8 @@ public:
     static constexpr auto kSchema = pednav::plugins::join_schema(kSchemaHead, kSchemaTail);
     static constexpr const char* kParamsSchema = kSchema.text;
 
-    StepModel(Params& p, const CreateContext&) : StepFilterBase(p), model_(model(p)),
-        stairs_length_m_(p.number("stairs_step_length_m")) {}
+    StepModel(Params& p, const CreateContext&)
+        : StepFilterBase(p, false), model_(model(p)), stairs_length_m_(p.number("stairs_step_length_m")) {}
 
 private:
     static pednav::pdr::StepLengthModel model(Params& p) {
@@ -124,8 +109,8 @@ private:
         m.beta_m = beta;
         return m;
     }
-    void on_attitude_sample(const pn_imu_t*, const pn_attitude_t&, double) override {}
-    bool step_displacement(const pn_step_t& step, double heading, double& east_m, double& north_m) override {
+    bool step_displacement(const pn_step_t& step, double heading, const pednav::pdr::PlaneVector&, double,
+                           double& east_m, double& north_m) override {
         const bool stairs = step.motion_mode == PN_STEP_MODE_UPSTAIRS || step.motion_mode == PN_STEP_MODE_DOWNSTAIRS;
         const double length = stairs && stairs_length_m_ > 0
                                   ? stairs_length_m_

@@ -1,17 +1,32 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the two step position filters share: the IMU sample, its attitude and
-// the step that ends at it, joined by time; the walking heading (a body axis
-// of the attitude, a fixed offset, and the start heading the app gives);
-// height and floor from the barometer; one STRIDE per walking step and one
-// POSITION per step (pauses included). The derived class gives the
-// displacement of each step.
+// the step that ends at it, joined by time; the walking heading; the step
+// vector (pdr::StepVectorBuffer: the double integral of the world-frame
+// horizontal acceleration over each step); height and floor from the
+// barometer; one STRIDE per walking step and one POSITION per step (pauses
+// included) and per floor change. The derived class gives the displacement.
+//
+// Walking heading of a step: the circular mean over the step of the heading
+// of the body axis forward_axis ("auto": the most level body axis at the
+// start), plus an offset between that axis and the walking direction. The
+// offset is heading_offset_deg, or, with learn_offset_steps > 0, learnt: the
+// exponentially weighted circular mean over that many steps of the step
+// vector's direction (backwards, eq. (1)) minus the axis heading, over
+// straight steps of steady walking (from the third step of a bout on),
+// starting from heading_offset_deg as if learnt over that many steps (with
+// auto, from the first learnt step). When the app gives the start heading H, the
+// walking heading is H plus the axis heading's change since the start, and
+// the offset does not enter.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include <pednav_barometry/barometric_altimeter.hpp>
 #include <pednav_navmath/angles.hpp>
+#include <pednav_pdr/step_vector.hpp>
 #include <pednav_pdr/walking_heading.hpp>
 #include <pednav_sdk/library.hpp>
 #include <pednav_sdk/time_join.hpp>
@@ -23,10 +38,14 @@ using namespace pednav::sdk;
 // The parameters both filters declare: schema properties, joined into each
 // filter's schema at compile time (join_schema).
 inline constexpr char kCommonParams[] = R"json(
-    "forward_axis": {"type": "string", "enum": ["x", "-x", "y", "-y", "z", "-z"], "default": "x",
-      "description": "the body axis that points the way the walker faces (x for the engine's forward-left-up body frame)"},
+    "forward_axis": {"type": "string", "enum": ["x", "-x", "y", "-y", "z", "-z", "auto"], "default": "x",
+      "description": "the body axis that points the way the walker faces (x for the engine's forward-left-up body frame); auto: the most level body axis at the start, its direction learnt (needs learn_offset_steps)"},
     "heading_offset_deg": {"type": "number", "x-unit": "deg", "minimum": -180, "maximum": 180, "default": 0,
-      "description": "walking direction minus the heading of forward_axis (a phone held turned); unused when the app gives the start heading, which fixes it"},
+      "description": "walking direction minus the heading of forward_axis (a phone held turned); the start of the learnt offset; unused when the app gives the start heading"},
+    "learn_offset_steps": {"type": "number", "minimum": 0, "maximum": 1000, "default": 0,
+      "description": "learn the offset from the step vectors' directions over about this many steps (a sensor that does not point the way the walker goes); 0 = heading_offset_deg as given"},
+    "max_step_s": {"type": "number", "x-unit": "s", "minimum": 0.1, "maximum": 10, "default": 1.5,
+      "description": "the step vector holds the samples of a step at most this long before its end"},
     "length_sd_fraction": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.1,
       "description": "standard deviation of a step's length, as a fraction of it (the stride covariance)"},
     "heading_sd_deg": {"type": "number", "x-unit": "deg", "minimum": 0, "maximum": 90, "default": 3,
@@ -71,12 +90,22 @@ public:
     static constexpr uint64_t kConsumes = Join::kRecordMask | PN_REC_MASK(PN_REC_BARO);
     static constexpr uint64_t kProduces = PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE);
 
-    explicit StepFilterBase(Params& p)
-        : axis_(axis(p)),
+    // uses_step_vector: the derived filter needs each step's double integral.
+    StepFilterBase(Params& p, bool uses_step_vector)
+        : auto_axis_(p.text("forward_axis") == "auto"),
+          axis_(auto_axis_ ? pednav::pdr::BodyAxis{} : pednav::pdr::parse_body_axis(p.text("forward_axis"))),
           heading_offset_rad_(p.number("heading_offset_deg") * M_PI / 180.0),
+          learn_steps_(p.number("learn_offset_steps")),
           length_sd_fraction_(p.number("length_sd_fraction")),
           heading_sd_rad_(p.number("heading_sd_deg") * M_PI / 180.0),
-          altimeter_(pednav::barometry::barometric_altimeter_config(p, "baro_")) {}
+          buffer_(p.number("max_step_s")),
+          altimeter_(pednav::barometry::barometric_altimeter_config(p, "baro_")),
+          offset_sin_(std::sin(heading_offset_rad_)),
+          offset_cos_(std::cos(heading_offset_rad_)) {
+        if (auto_axis_ && learn_steps_ <= 0)
+            Params::fail("forward_axis", "is auto, which needs learn_offset_steps > 0 (the axis's direction is learnt)");
+        uses_step_vector_ = uses_step_vector || learn_steps_ > 0;
+    }
 
     void on_imu(const pn_imu_t& r) override { join_.add(r, sample()); }
     void on_attitude(const pn_attitude_t& r) override { join_.add(r, sample()); }
@@ -98,53 +127,84 @@ public:
     }
 
 protected:
-    // A sample with its attitude (IMU may be absent); the walking heading of it.
-    virtual void on_attitude_sample(const pn_imu_t* imu, const pn_attitude_t& att, double walking_heading_rad) = 0;
     // The displacement (east, north) of a walking step; false for none.
-    virtual bool step_displacement(const pn_step_t& step, double walking_heading_rad, double& east_m,
-                                   double& north_m) = 0;
-
-    // The walking heading of an attitude (rad, clockwise from north), NaN when
-    // the forward axis is vertical.
-    double walking_heading(const pn_attitude_t& att) {
-        const double h = pednav::pdr::axis_heading_rad(att.q_enu_from_body, axis_);
-        if (std::isnan(h)) return NAN;
-        if (!aligned_) {
-            // The app's start heading is the walking direction now: it fixes the offset.
-            aligned_ = true;
-            yaw_align_rad_ = std::isfinite(start_heading_rad_) ? start_heading_rad_ - h - heading_offset_rad_ : 0.0;
-        }
-        return pednav::navmath::wrap_pi(h + heading_offset_rad_ + yaw_align_rad_);
-    }
-    // The rotation from the attitude's ENU to the start-aligned ENU, rad
-    // (clockwise), 0 until the first attitude.
-    double yaw_align_rad() const { return yaw_align_rad_; }
+    // heading: the walking heading; vector: the step's double integral of the
+    // horizontal acceleration in the attitude's frame (zero unless the filter
+    // uses the step vector); yaw_align: the clockwise turn from the
+    // attitude's frame to the start-aligned one.
+    virtual bool step_displacement(const pn_step_t& step, double heading_rad, const pednav::pdr::PlaneVector& vector,
+                                   double yaw_align_rad, double& east_m, double& north_m) = 0;
+    // remove_mean of the double integral (the step vector's choice).
+    virtual bool remove_mean_accel() const { return false; }
 
 private:
-    static pednav::pdr::BodyAxis axis(Params& p) { return pednav::pdr::parse_body_axis(p.text("forward_axis")); }
-
     void process(const Join::Sample& s) {
-        const pn_attitude_t* att = s.get<pn_attitude_t>();
-        if (att) {
-            const double h = walking_heading(*att);
-            if (std::isfinite(h)) {
-                sum_sin_ += std::sin(h), sum_cos_ += std::cos(h);
-                last_heading_rad_ = h;
+        if (const pn_attitude_t* att = s.get<pn_attitude_t>()) {
+            const pn_attitude_t& a = *att;
+            if (!started_) start(a);
+            const double h = pednav::pdr::axis_heading_rad(a.q_enu_from_body, axis_);
+            if (std::isfinite(h)) sum_sin_ += std::sin(h), sum_cos_ += std::cos(h);
+            const pn_imu_t* imu = s.get<pn_imu_t>();
+            if (uses_step_vector_ && imu) {
+                const double w = a.q_enu_from_body[0], x = a.q_enu_from_body[1], y = a.q_enu_from_body[2],
+                             z = a.q_enu_from_body[3];
+                const double* f = imu->accel_mps2;
+                // The first two rows of R(q) times the specific force: gravity has no horizontal part.
+                const double e = (1 - 2 * (y * y + z * z)) * f[0] + 2 * (x * y - w * z) * f[1] + 2 * (x * z + w * y) * f[2];
+                const double n = 2 * (x * y + w * z) * f[0] + (1 - 2 * (x * x + z * z)) * f[1] + 2 * (y * z - w * x) * f[2];
+                buffer_.add({a.header.t_ns, e, n});
             }
-            on_attitude_sample(s.get<pn_imu_t>(), *att, h);
         }
         if (const pn_step_t* step = s.get<pn_step_t>()) close_step(*step);
     }
-    // The step's walking heading: the circular mean over its samples.
+    // The first attitude: the forward axis (auto: the most level one) and its heading now.
+    void start(const pn_attitude_t& a) {
+        started_ = true;
+        if (auto_axis_) {
+            const double w = a.q_enu_from_body[0], x = a.q_enu_from_body[1], y = a.q_enu_from_body[2],
+                         z = a.q_enu_from_body[3];
+            const double up[3] = {std::fabs(2 * (x * z - w * y)), std::fabs(2 * (y * z + w * x)),
+                                  std::fabs(1 - 2 * (x * x + y * y))};
+            axis_.index = up[0] <= up[1] && up[0] <= up[2] ? 0 : (up[1] <= up[2] ? 1 : 2);
+            axis_.sign = 1.0;
+        }
+        start_axis_heading_rad_ = pednav::pdr::axis_heading_rad(a.q_enu_from_body, axis_);
+        if (std::isfinite(start_heading_rad_) && std::isfinite(start_axis_heading_rad_))
+            yaw_align_rad_ = start_heading_rad_ - start_axis_heading_rad_ - heading_offset_rad_;
+    }
+    double offset_rad() const { return std::atan2(offset_sin_, offset_cos_); }
     void close_step(const pn_step_t& step) {
-        const double heading = (sum_sin_ != 0 || sum_cos_ != 0) ? std::atan2(sum_sin_, sum_cos_) : last_heading_rad_;
+        // The axis heading over the step: the circular mean of its samples.
+        if (sum_sin_ != 0 || sum_cos_ != 0) axis_heading_rad_ = std::atan2(sum_sin_, sum_cos_);
         sum_sin_ = sum_cos_ = 0;
+        const bool walking = step.motion_mode != PN_STEP_MODE_STATIC;
+        pednav::pdr::PlaneVector v;
+        if (uses_step_vector_ && walking) v = buffer_.close(step.t_start_ns, step.header.t_ns, remove_mean_accel());
+        walking_run_ = walking ? walking_run_ + 1 : 0;
+        // Learnt from steady straight walking only: the first steps of a bout
+        // accelerate (their double integral points forwards), a turn adds the
+        // centripetal acceleration.
+        if (learn_steps_ > 0 && step.motion_mode == PN_STEP_MODE_STRAIGHT && walking_run_ > 2 &&
+            std::isfinite(axis_heading_rad_) && (v.east_m != 0 || v.north_m != 0)) {
+            // The walker goes against the step vector (eq. 1: K < 0).
+            const double d = std::atan2(-v.east_m, -v.north_m) - axis_heading_rad_;
+            // A running mean over the first steps (after the prior's weight:
+            // none for auto), then exponential over learn_offset_steps.
+            ++learnt_steps_;
+            const double a = 1.0 / std::min(learnt_steps_ + (auto_axis_ ? 0.0 : learn_steps_), learn_steps_);
+            offset_sin_ += a * (std::sin(d) - offset_sin_);
+            offset_cos_ += a * (std::cos(d) - offset_cos_);
+        }
+        double heading = NAN;
+        if (std::isfinite(axis_heading_rad_)) {
+            const bool given = std::isfinite(start_heading_rad_) && std::isfinite(start_axis_heading_rad_);
+            heading = pednav::navmath::wrap_pi(given ? start_heading_rad_ + (axis_heading_rad_ - start_axis_heading_rad_)
+                                                     : axis_heading_rad_ + offset_rad());
+        }
         double de = 0, dn = 0;
-        const bool moved = step.motion_mode != PN_STEP_MODE_STATIC && std::isfinite(heading) &&
-                           step_displacement(step, heading, de, dn);
-        if (altimeter_.ready()) pos_[2] = start_[2] + altimeter_.altitude_m();
-        if (moved) emit_stride(step, heading, de, dn);
-        if (step.header.t_ns >= t_out_ns_) emit_position(step.header.t_ns, std::isfinite(heading) ? heading : 0.0);
+        const bool moved = walking && std::isfinite(heading) && step_displacement(step, heading, v, yaw_align_rad_, de, dn);
+        if (moved) emit_stride(step, de, dn);
+        if (step.header.t_ns >= t_out_ns_) emit_position(step.header.t_ns, std::isfinite(heading) ? heading : last_heading_out_rad_);
     }
     void emit_position(int64_t t_ns, double heading_rad) {
         if (altimeter_.ready()) pos_[2] = start_[2] + altimeter_.altitude_m();
@@ -163,9 +223,10 @@ private:
         last_heading_out_rad_ = heading_rad;
         emit(r);
     }
-    void emit_stride(const pn_step_t& step, double heading, double de, double dn) {
+    void emit_stride(const pn_step_t& step, double de, double dn) {
         const double length = std::hypot(de, dn);
         if (!std::isfinite(length)) throw NumericError("step displacement is not finite");
+        if (altimeter_.ready()) pos_[2] = start_[2] + altimeter_.altitude_m();
         const double dz = pos_[2] - last_stride_z_;
         pos_[0] += de, pos_[1] += dn;
         last_stride_z_ = pos_[2];
@@ -183,8 +244,8 @@ private:
         r.displacement_enu_m[1] = dn;
         r.displacement_enu_m[2] = dz;
         r.length_m = length;
-        r.heading_change_rad = std::isfinite(prev_heading_rad_) ? pednav::navmath::wrap_pi(heading - prev_heading_rad_) : 0.0;
-        prev_heading_rad_ = heading;
+        r.heading_change_rad = std::isfinite(prev_dir_rad_) ? pednav::navmath::wrap_pi(dir - prev_dir_rad_) : 0.0;
+        prev_dir_rad_ = dir;
         r.cov_displacement_m2[0] = cee, r.cov_displacement_m2[1] = cen;
         r.cov_displacement_m2[3] = cen, r.cov_displacement_m2[4] = cnn;
         r.stride_class = step.motion_mode == PN_STEP_MODE_UPSTAIRS     ? PN_STRIDE_CLASS_STAIRS_UP
@@ -194,18 +255,21 @@ private:
         emit(r);
     }
 
+    bool auto_axis_;
     pednav::pdr::BodyAxis axis_;
-    double heading_offset_rad_, length_sd_fraction_, heading_sd_rad_;
+    double heading_offset_rad_, learn_steps_, length_sd_fraction_, heading_sd_rad_;
+    bool uses_step_vector_ = false;
+    pednav::pdr::StepVectorBuffer buffer_;
     pednav::barometry::BarometricAltimeter altimeter_;
     Join join_;
     double start_[3] = {0, 0, 0}, pos_[3] = {0, 0, 0}, cov_[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    double start_heading_rad_ = NAN, yaw_align_rad_ = 0.0;
-    bool aligned_ = false, has_baro_ = false;
-    int32_t floor_out_ = 0;
+    bool started_ = false, has_baro_ = false;
+    double start_heading_rad_ = NAN, start_axis_heading_rad_ = NAN, yaw_align_rad_ = 0.0;
+    double offset_sin_, offset_cos_, learnt_steps_ = 0;
+    double sum_sin_ = 0, sum_cos_ = 0, axis_heading_rad_ = NAN, prev_dir_rad_ = NAN, last_stride_z_ = 0;
+    int32_t floor_out_ = 0, stride_index_ = 0, walking_run_ = 0;
     int64_t t_out_ns_ = INT64_MIN;
     double last_heading_out_rad_ = 0.0;
-    double sum_sin_ = 0, sum_cos_ = 0, last_heading_rad_ = NAN, prev_heading_rad_ = NAN, last_stride_z_ = 0;
-    int32_t stride_index_ = 0;
 };
 
 }  // namespace pednav::plugins

@@ -30,3 +30,15 @@ Calibrated calibrate_on_recordings(const std::string& config_json, const std::st
                                    const eval::CalibrationOptions& options = {});
 
 }  // namespace pednav::chest_eval
+
+namespace pednav::chest_eval {
+
+// The params of the config's pipelines/<mount>/position_filter with every
+// key its plugin's schema declares and the config leaves out set to the
+// schema's default (from pn_plugins_describe over plugin_dirs), so that a
+// config listing only what it changes can be calibrated. Throws
+// std::runtime_error when the stage or its plugin is not found.
+nlohmann::json position_filter_params(const nlohmann::json& config, const std::string& mount,
+                                      const std::vector<std::string>& plugin_dirs);
+
+}  // namespace pednav::chest_eval
