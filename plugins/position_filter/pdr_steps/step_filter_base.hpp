@@ -38,11 +38,11 @@ using namespace pednav::sdk;
 // The parameters both filters declare: schema properties, joined into each
 // filter's schema at compile time (join_schema).
 inline constexpr char kCommonParams[] = R"json(
-    "forward_axis": {"type": "string", "enum": ["x", "-x", "y", "-y", "z", "-z", "auto"], "default": "x",
+    "forward_axis": {"type": "string", "enum": ["x", "-x", "y", "-y", "z", "-z", "auto"], "default": "auto",
       "description": "the body axis that points the way the walker faces (x for the engine's forward-left-up body frame); auto: the most level body axis at the start, its direction learnt (needs learn_offset_steps)"},
     "heading_offset_deg": {"type": "number", "x-unit": "deg", "minimum": -180, "maximum": 180, "default": 0,
       "description": "walking direction minus the heading of forward_axis (a phone held turned); the start of the learnt offset; unused when the app gives the start heading"},
-    "learn_offset_steps": {"type": "number", "minimum": 0, "maximum": 1000, "default": 0,
+    "learn_offset_steps": {"type": "number", "minimum": 0, "maximum": 1000, "default": 20,
       "description": "learn the offset from the step vectors' directions over about this many steps (a sensor that does not point the way the walker goes); 0 = heading_offset_deg as given"},
     "max_step_s": {"type": "number", "x-unit": "s", "minimum": 0.1, "maximum": 10, "default": 1.5,
       "description": "the step vector holds the samples of a step at most this long before its end"},

@@ -203,8 +203,9 @@ KinState BodyKinematics::at(double t_s) {
         // Surge along the walking direction t: (s t)'' = s'' t + 2 s' t' + s t''.
         const Profile surge = oscillation(shape_.surge_m, w, ph, 2.0, 0.0);
         const Eigen::Vector3d dt = yaw.df * n, ddt = yaw.ddf * n - yaw.df * yaw.df * tang;
-        // The hand: lateral at the step frequency, vertical at the step frequency a quarter out of phase.
-        const Profile hand_lat = oscillation(shape_.hand_sway_m, w, ph, 2.0, 0.25 * M_PI);
+        // The hand: lateral with the shoulders at half the step frequency (a quarter period after the
+        // trunk's sway), vertical at the step frequency.
+        const Profile hand_lat = oscillation(shape_.hand_sway_m, w, ph, 1.0, 0.5 * M_PI);
         const Profile hand_up = oscillation(shape_.hand_sway_m, w, ph, 2.0, 0.75 * M_PI);
         k.p_enu_m += surge.f * tang + hand_lat.f * n + Eigen::Vector3d(0.0, 0.0, hand_up.f);
         k.v_enu_mps += surge.df * tang + surge.f * dt + hand_lat.df * n + hand_lat.f * dn +

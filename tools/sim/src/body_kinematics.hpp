@@ -26,7 +26,7 @@ struct BodyShape {
     double surge_m = 0.0;          // forward oscillation at the step frequency, fastest at each landing
                                    // (the inverted pendulum: the trunk is lowest and fastest in double support)
     double pitch_offset_rad = 0.0; // constant pitch, negative = nose up (a phone tilted towards the face)
-    double hand_sway_m = 0.0;      // the hand's own lateral and vertical motion, at the step frequency
+    double hand_sway_m = 0.0;      // the hand's own motion: lateral at half the step frequency, vertical at it
     double wobble_rad = 0.0;       // slow attitude wobble of the hand (yaw, pitch, roll), 0.23 to 0.61 Hz
     static BodyShape chest() { return {}; }
     static BodyShape waist() { return {1.0, 0.025, 0.025, 0.025, 0.04}; }
