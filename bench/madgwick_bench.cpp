@@ -4,7 +4,8 @@
 // magnetometer record (a simulated handheld walk, the field gated as in the
 // preset). Prints figures; not a test.
 //
-//   madgwick_bench [--route building_tour] [--rate 200] [--form marg|imu] [--passes 10] [--callgrind]
+//   madgwick_bench [--route building_tour] [--rate 200] [--mag-rate HZ] [--form marg|imu] [--passes 10] [--callgrind]
+// --mag-rate: the magnetometer on every round(rate / HZ)-th IMU sample (default: every sample).
 //   valgrind --tool=callgrind --instr-atstart=no madgwick_bench --callgrind
 // (instructions per sample = Ir / samples).
 #include <valgrind/callgrind.h>
@@ -24,7 +25,7 @@
 
 int main(int argc, char** argv) {
     std::string route = "building_tour", form = "marg";
-    double rate = 200;
+    double rate = 200, mag_rate = 0;
     bool callgrind = false;
     int passes = 10;
     for (int i = 1; i < argc; ++i) {
@@ -32,10 +33,12 @@ int main(int argc, char** argv) {
         if (a == "--route" && i + 1 < argc) route = argv[++i];
         else if (a == "--rate" && i + 1 < argc) rate = std::stod(argv[++i]);
         else if (a == "--form" && i + 1 < argc) form = argv[++i];
+        else if (a == "--mag-rate" && i + 1 < argc) mag_rate = std::stod(argv[++i]);
         else if (a == "--callgrind") callgrind = true;
         else if (a == "--passes" && i + 1 < argc) passes = std::max(1, std::stoi(argv[++i]));
         else {
-            std::fprintf(stderr, "usage: %s [--route NAME] [--rate HZ] [--form marg|imu] [--passes N] [--callgrind]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--route NAME] [--rate HZ] [--mag-rate HZ] [--form marg|imu] [--passes N] [--callgrind]\n",
+                         argv[0]);
             return 2;
         }
     }
@@ -49,6 +52,7 @@ int main(int argc, char** argv) {
         so.mount = "handheld";
         so.rate_hz = rate;
         so.with_baro = so.with_gnss = false;
+        so.mag_rate_hz = mag_rate;
         const auto walk = pednav::sim::simulate(pednav::sim::builtin_route(route), so);
         const auto records = walk.records();  // IMU and MAG, time order
         pednav::bench::PluginNode node =

@@ -76,6 +76,7 @@ public:
 private:
     MadgwickConfig c_;
     double sin_decl_, cos_decl_;
+    int64_t init_ns_;
     Quat q_ = Quat::Identity();
     Vec3 bias_ = Vec3::Zero();
     bool aligned_ = false, started_ = false;
