@@ -169,8 +169,6 @@ private:
             axis_.sign = 1.0;
         }
         start_axis_heading_rad_ = pednav::pdr::axis_heading_rad(a.q_enu_from_body, axis_);
-        if (std::isfinite(start_heading_rad_) && std::isfinite(start_axis_heading_rad_))
-            yaw_align_rad_ = start_heading_rad_ - start_axis_heading_rad_ - heading_offset_rad_;
     }
     double offset_rad() const { return std::atan2(offset_sin_, offset_cos_); }
     void close_step(const pn_step_t& step) {
@@ -196,13 +194,15 @@ private:
             offset_cos_ += a * (std::cos(d) - offset_cos_);
         }
         double heading = NAN;
-        if (std::isfinite(axis_heading_rad_)) {
-            const bool given = std::isfinite(start_heading_rad_) && std::isfinite(start_axis_heading_rad_);
+        const bool given = std::isfinite(start_heading_rad_) && std::isfinite(start_axis_heading_rad_);
+        if (std::isfinite(axis_heading_rad_))
             heading = pednav::navmath::wrap_pi(given ? start_heading_rad_ + (axis_heading_rad_ - start_axis_heading_rad_)
                                                      : axis_heading_rad_ + offset_rad());
-        }
+        // The attitude's frame turned so that the walking direction at the start is the app's
+        // heading: the axis heading then plus the offset (as learnt so far) is that heading.
+        const double yaw_align = given ? start_heading_rad_ - start_axis_heading_rad_ - offset_rad() : 0.0;
         double de = 0, dn = 0;
-        const bool moved = walking && std::isfinite(heading) && step_displacement(step, heading, v, yaw_align_rad_, de, dn);
+        const bool moved = walking && std::isfinite(heading) && step_displacement(step, heading, v, yaw_align, de, dn);
         if (moved) emit_stride(step, de, dn);
         if (step.header.t_ns >= t_out_ns_) emit_position(step.header.t_ns, std::isfinite(heading) ? heading : last_heading_out_rad_);
     }
@@ -264,7 +264,7 @@ private:
     Join join_;
     double start_[3] = {0, 0, 0}, pos_[3] = {0, 0, 0}, cov_[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     bool started_ = false, has_baro_ = false;
-    double start_heading_rad_ = NAN, start_axis_heading_rad_ = NAN, yaw_align_rad_ = 0.0;
+    double start_heading_rad_ = NAN, start_axis_heading_rad_ = NAN;
     double offset_sin_, offset_cos_, learnt_steps_ = 0;
     double sum_sin_ = 0, sum_cos_ = 0, axis_heading_rad_ = NAN, prev_dir_rad_ = NAN, last_stride_z_ = 0;
     int32_t floor_out_ = 0, stride_index_ = 0, walking_run_ = 0;
