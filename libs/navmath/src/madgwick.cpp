@@ -7,6 +7,16 @@
 #include "pednav_navmath/alignment.hpp"
 #include "pednav_navmath/heading.hpp"
 
+// The update is also compiled for AVX and picked at load time on x86-64 with
+// GCC (as the foot EKF's kernels are): the three-operand encoding saves the
+// register copies of SSE2; no FMA contraction, no reassociation, so both
+// versions give the same bits.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__)
+#define PEDNAV_MADGWICK_CLONES __attribute__((target_clones("avx", "default")))
+#else
+#define PEDNAV_MADGWICK_CLONES
+#endif
+
 namespace pednav::navmath {
 
 Madgwick::Madgwick(const MadgwickConfig& c) : c_(c) {
@@ -50,6 +60,7 @@ Vec3 Madgwick::up_body() const {
     return Vec3(2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y));
 }
 
+PEDNAV_MADGWICK_CLONES
 bool Madgwick::update(int64_t t_ns, const Vec3& gyro, const Vec3& accel, const Vec3* mag) {
     const double ax = accel.x(), ay = accel.y(), az = accel.z();
     const double an2 = ax * ax + ay * ay + az * az;
