@@ -232,6 +232,8 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
                     if (err) g.vel_enu_mps[i] += options.gnss_vel_noise_mps * rng_gnss.normal();
                 }
                 g.header.flags = PN_GNSS_FLAG_HAS_VELOCITY;
+                g.satellites = 12;
+                g.fix_type = PN_GNSS_FIX_AUTONOMOUS;
                 out.gnss.push_back(g);
             }
         }
