@@ -21,6 +21,8 @@ struct GnssReader {
 
 const std::vector<GnssReader>& gnss_readers() {
     static const std::vector<GnssReader> readers = {
+        {"nmea", "NMEA 0183 sentences (GGA, RMC, GSA, GST, VTG, ZDA) of any talker", detail::detect_nmea,
+         detail::read_nmea},
         {"csv", "GNSS CSV t,lat,lon,alt,hacc,vacc,speed,course,sats in s, deg, m, m/s, deg", detail::detect_gnss_csv,
          detail::read_gnss_csv},
     };
@@ -110,10 +112,20 @@ void use_gnss(SensorLog& log, const SensorLog& gnss) {
 }
 
 bool parse_utc(const std::string& text, int64_t* utc_ns) {
+    // Unix seconds: whole seconds and the fraction apart, exact to the nanosecond.
     double seconds = 0.0;
     if (parse_number(text, &seconds) == NumberStatus::ok) {
         if (!(seconds > 0.0 && seconds < 1e11)) return false;
-        *utc_ns = static_cast<int64_t>(std::llround(seconds * 1e9));
+        if (text.find_first_of("eE") != std::string::npos) {
+            *utc_ns = static_cast<int64_t>(std::llround(seconds * 1e9));
+            return true;
+        }
+        const size_t point = text.find('.');
+        double whole = 0.0, fraction = 0.0;
+        parse_number(std::string_view(text).substr(0, point), &whole);
+        if (point != std::string::npos && point + 1 < text.size())
+            parse_number("0" + text.substr(point), &fraction);
+        *utc_ns = static_cast<int64_t>(whole) * 1000000000 + std::llround(fraction * 1e9);
         return true;
     }
     int year = 0, month = 0, day = 0, hour = 0, minute = 0, used = 0;
