@@ -20,7 +20,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: pednav run --mount foot|chest|waist --input FILE [--config FILE] [--format NAME]\n"
     "                  [--output track.csv] [--steps FILE] [--start x,y,z] [--heading DEG]\n"
-    "                  [--geojson FILE] [--gpx FILE] [--summary FILE] [--plot FILE.svg]\n"
+    "                  [--geojson FILE [--geojson-points]] [--gpx FILE] [--geo-csv FILE]\n"
+    "                  [--summary FILE] [--plot FILE.svg]\n"
     "                  [--column-map FILE.json] [--origin lat,lon,height] [--map FILE.geojson]\n"
     "                  [--plugin-dir DIR] [--gnss FILE [--gnss-format auto|nmea|csv] [--gnss-t0 S]\n"
     "                  [--gnss-utc0 UTC] [--gnss-uere M]]\n"
@@ -33,7 +34,10 @@ constexpr const char* kUsage =
     "  --gnss-uere  range error (m, 1 sigma) scaling HDOP/VDOP when the NMEA has no GST (default 5)\n"
     "  --start, --heading  the start point (m) and heading (deg clockwise from north), when known\n"
     "  --origin  the geodetic origin (WGS-84 of ENU 0,0,0, the start point by default): given to the\n"
-    "            engine and used by --geojson and --gpx\n"
+    "            engine and used by --geojson, --gpx and --geo-csv (default: the engine's own, e.g.\n"
+    "            from the first good GNSS fix)\n"
+    "  --geo-csv the track in latitude/longitude: t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m\n"
+    "  --geojson-points  a Point per position (0.1 s apart) with its source, floor, heading and sigma\n"
     "  --map     a map (GeoJSON, docs/maps.md) for the pipeline's map matcher\n"
     "exit status: 0 done, 1 an error (or plugin failures: outputs still written), 2 a usage mistake\n";
 
@@ -54,10 +58,11 @@ const char* const pednav_cmd_run_usage = kUsage;
 int pednav_cmd_run(const std::vector<std::string>& argv) {
     using namespace pednav;
     cli::Args args(argv, kUsage);
-    std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, summary, plot, column_map_path,
+    std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, geo_csv, summary, plot,
+        column_map_path,
         map_path, gnss_path;
     io::GnssReadOptions gnss_options;
-    bool gnss_t0_given = false;
+    bool gnss_t0_given = false, geojson_points = false;
     io::Origin origin;
     ReplayOptions options;
     options.plugin_dirs = {cli::default_plugin_dir()};
@@ -71,6 +76,8 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         else if (a == "--steps") steps = args.value(a);
         else if (a == "--geojson") geojson = args.value(a);
         else if (a == "--gpx") gpx = args.value(a);
+        else if (a == "--geo-csv") geo_csv = args.value(a);
+        else if (a == "--geojson-points") geojson_points = true;
         else if (a == "--summary") summary = args.value(a);
         else if (a == "--plot") plot = args.value(a);
         else if (a == "--column-map") column_map_path = args.value(a);
@@ -110,6 +117,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         }
     }
     if (input.empty()) throw cli::UsageError("run needs --input FILE");
+    if (geojson_points && geojson.empty()) throw cli::UsageError("--geojson-points goes with --geojson FILE");
     if (gnss_path.empty() && (gnss_options.format != "auto" || gnss_t0_given || gnss_options.time.utc_ns_at_zero))
         throw cli::UsageError("--gnss-format, --gnss-t0 and --gnss-utc0 go with --gnss FILE");
     if (gnss_options.format != "auto" && gnss_options.format != "nmea" && gnss_options.format != "csv")
@@ -183,8 +191,14 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     if (origin.utc_ns_at_zero == 0) origin.utc_ns_at_zero = log.utc_ns_at_zero;
     if (!output.empty()) io::write_track_csv(output, r.positions);
     if (!steps.empty()) io::write_steps_csv(steps, r.strides);
-    if (!geojson.empty()) io::write_geojson(geojson, r.positions, r.strides, origin);
+    if (!geojson.empty()) {
+        io::GeoJsonExtras extras;
+        extras.position_points = geojson_points;
+        if (!log.gnss.empty()) extras.gnss_fixes = &log.gnss;
+        io::write_geojson(geojson, r.positions, r.strides, origin, extras);
+    }
     if (!gpx.empty()) io::write_gpx(gpx, r.positions, origin);
+    if (!geo_csv.empty()) io::write_geo_track_csv(geo_csv, r.positions, origin);
     if (!summary.empty()) {
         std::ofstream out(summary);
         nlohmann::json j = io::run_summary_json(log, r.describe_json, r.positions, r.strides, r.warnings);
