@@ -41,7 +41,7 @@ struct SimOptions {
     double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};
     bool with_mag = true;
     bool with_baro = true;
-    bool with_gnss = true;  // fixes only on outdoor segments
+    bool with_gnss = true;  // fixes where the route has GNSS (outdoor segments, or their `gnss` quality)
     // Magnetometer and barometer rates: 0 = with every IMU sample, otherwise on every
     // round(rate_hz / x)-th IMU sample.
     double mag_rate_hz = 0.0;
@@ -62,6 +62,8 @@ struct SimOptions {
     double gnss_white_h_m = 0.5;  // per horizontal axis: white part
     double gnss_sigma_v_m = 3.0;  // vertical
     double gnss_vel_noise_mps = 0.1;
+    // Multipath jumps besides the route's own (Route::gnss_jumps).
+    std::vector<GnssJump> gnss_jumps;
 };
 
 struct TruthSample {
