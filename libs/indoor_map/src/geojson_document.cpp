@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "geojson_document.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace pednav::indoor_map {
 
@@ -46,6 +48,27 @@ geodesy::GeodeticPoint origin_from_object(const nlohmann::json& o) {
 }
 
 }  // namespace
+
+FeatureKind feature_kind(const nlohmann::json& feature, const std::string& at) {
+    static const nlohmann::json no_properties = nlohmann::json::object();
+    if (!feature.is_object()) throw MapError(at, "a feature is a JSON object");
+    const nlohmann::json* p = member(feature, "properties");
+    const nlohmann::json* props = p && p->is_object() ? p : &no_properties;
+    if (member(*props, "pednav:kind")) {
+        const std::string kind = string_member(*props, at + "/properties", "pednav:kind");
+        static const char* const kKinds[] = {"wall",   "zone",      "no_particles", "altitude_zone",
+                                             "stairs", "escalator", "lift",         "landmark"};
+        if (std::find(std::begin(kKinds), std::end(kKinds), kind) == std::end(kKinds))
+            throw MapError(at + "/properties/pednav:kind",
+                           "unknown pednav:kind \"" + kind +
+                               "\" (wall, zone, no_particles, altitude_zone, stairs, escalator, lift or landmark)");
+        return {kind, "pednav:floor", props};
+    }
+    // The simulator's maps before pednav.map/1 named their walls with plain
+    // "kind": "wall" and "floor".
+    if (const nlohmann::json* legacy = member(*props, "kind"); legacy && *legacy == "wall") return {"wall", "floor", props};
+    return {"", nullptr, props};
+}
 
 std::string pointer_token(const std::string& key) {
     std::string s;

@@ -30,6 +30,16 @@ double number_member(const nlohmann::json& object, const std::string& at, const 
 int integer_member(const nlohmann::json& object, const std::string& at, const char* key);
 std::string string_member(const nlohmann::json& object, const std::string& at, const char* key);
 
+// What a feature is: its pednav:kind (checked against the known kinds), or
+// for the simulator's earlier maps a plain "kind": "wall"; an empty kind for
+// a feature pednav does not read (no pednav:kind: a GIS extra).
+struct FeatureKind {
+    std::string kind;
+    const char* floor_key;           // "pednav:floor", or "floor" in the earlier form
+    const nlohmann::json* properties;  // an empty object when the feature has none
+};
+FeatureKind feature_kind(const nlohmann::json& feature, const std::string& at);
+
 // JSON pointer reference token of a member name ("~" and "/" escaped).
 std::string pointer_token(const std::string& key);
 

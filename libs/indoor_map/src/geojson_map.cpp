@@ -131,30 +131,12 @@ Map read_geojson_map(std::string_view document, const std::optional<geodesy::Geo
     for (size_t i = 0; i < features.size(); ++i) {
         const json& feature = features[i];
         const std::string at = "/features/" + std::to_string(i);
-        if (!feature.is_object()) throw MapError(at, "a feature is a JSON object");
-        static const json no_properties = json::object();
-        const json* p = detail::member(feature, "properties");
-        const json& props = p && p->is_object() ? *p : no_properties;
-        // Features without pednav:kind are someone else's (GIS extras). The
-        // simulator's maps before pednav.map/1 named their walls with plain
-        // "kind": "wall" and "floor": those are read as walls.
-        const char* floor_key = "pednav:floor";
-        std::string kind;
-        if (detail::member(props, "pednav:kind")) kind = detail::string_member(props, at + "/properties", "pednav:kind");
-        else if (const json* legacy = detail::member(props, "kind"); legacy && *legacy == "wall") {
-            kind = "wall";
-            floor_key = "floor";
-        } else {
-            continue;
-        }
-        static const char* const kKinds[] = {"wall",   "zone",      "no_particles", "altitude_zone",
-                                             "stairs", "escalator", "lift",         "landmark"};
-        if (std::find(std::begin(kKinds), std::end(kKinds), kind) == std::end(kKinds))
-            throw MapError(at + "/properties/pednav:kind",
-                           "unknown pednav:kind \"" + kind +
-                               "\" (wall, zone, no_particles, altitude_zone, stairs, escalator, lift or landmark)");
+        const detail::FeatureKind fk = detail::feature_kind(feature, at);
+        if (fk.kind.empty()) continue;
+        const std::string& kind = fk.kind;
+        const json& props = *fk.properties;
         const FeatureContext f{feature, props, at, static_cast<int>(i),
-                               detail::integer_member(props, at + "/properties", floor_key), kind};
+                               detail::integer_member(props, at + "/properties", fk.floor_key), kind};
         if (kind == "wall") read_wall(frame, f, m);
         else if (kind == "zone") read_zone(frame, f, ZoneKind::walkable, m);
         else if (kind == "no_particles") read_zone(frame, f, ZoneKind::no_particles, m);
