@@ -98,7 +98,7 @@ SimOutput simulate(const Route& route, const SimOptions& options);
 //   input.csv      canonical engine input, header t,ax,ay,az,gx,gy,gz[,mx,my,mz][,p]
 //   truth.csv      t,x,y,z,qw,qx,qy,qz,vx,vy,vz,stance,step,floor,heading_deg
 //   gnss.csv       t,lat,lon,alt,hacc,vacc,speed,course,sats,fix (the GNSS CSV of docs/formats.md)
-//   building.geojson  the route's walls and path (WGS-84)
+//   building.geojson  the route's map, pednav.map/1 (building_map.hpp)
 //   route.json     the route document
 void write_outputs(const SimOutput& out, const Route& route, const std::string& out_dir);
 
