@@ -119,6 +119,8 @@ int pednav_cmd_inspect(const std::vector<std::string>& argv) {
             throw cli::UsageError(std::string("inspect takes one FILE, not also ").append(a));
     }
     if (path.empty()) throw cli::UsageError("inspect needs a FILE");
+    if (gnss_path.empty() && gnss_options.format != "auto")
+        throw cli::UsageError("--gnss-format goes with --gnss FILE");
     if (gnss_options.format != "auto" && gnss_options.format != "nmea" && gnss_options.format != "csv")
         throw cli::UsageError("--gnss-format must be auto, nmea or csv, not " + gnss_options.format);
     nlohmann::json column_map;
