@@ -2,11 +2,14 @@
 #include "cmd_eval.hpp"
 
 #include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <stdexcept>
 
 #include <pednav_eval/metrics.hpp>
 #include <pednav_eval/truth_readers.hpp>
+#include <pednav_indoor_map/geojson_map.hpp>
+#include <pednav_plot/eval_plot.hpp>
 
 #include "cli_common.hpp"
 
@@ -14,13 +17,16 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: pednav eval --track FILE --truth PATH [--kind KIND] [--align MODE] [--fit-points N]\n"
-    "                   [--steps FILE] [--json]\n"
+    "                   [--steps FILE] [--json] [--plot FILE.svg [--map FILE.geojson] [--origin lat,lon,height]]\n"
     "  --track   the track CSV written by pednav run (t,x,y,z,heading_deg,floor,...)\n"
     "  --truth   truth file or folder; --kind auto (default), sim, koroglu, humolire, ipin, ipol,\n"
     "            loop or loop:LENGTH_M (closed loop: --truth is then ignored)\n"
     "  --align   none, start, first-segment or fitted (default: fitted for koroglu, none for ipin,\n"
     "            start otherwise); --fit-points N checkpoints for fitted (default 5, 0 = all)\n"
-    "  --steps   step events CSV (time in the first column) to compare step counts\n";
+    "  --steps   step events CSV (time in the first column) to compare step counts\n"
+    "  --plot    the track over the truth and the walls, and its error against time, as SVG; with\n"
+    "            --map (pednav.map/1), over the map instead, one panel per floor, with its landmarks;\n"
+    "            --origin for a WGS-84 map (default: the map's own)\n";
 
 }  // namespace
 
@@ -28,7 +34,8 @@ const char* const pednav_cmd_eval_usage = kUsage;
 
 int pednav_cmd_eval(const std::vector<std::string>& args) {
     using namespace pednav::eval;
-    std::string track_path, truth_path, kind = "auto", align_name, steps_path;
+    std::string track_path, truth_path, kind = "auto", align_name, steps_path, plot_path, map_path;
+    std::optional<pednav::geodesy::GeodeticPoint> origin;
     bool json = false;
     EvalOptions options;
     pednav::cli::Args in(args, kUsage);
@@ -49,12 +56,21 @@ int pednav_cmd_eval(const std::vector<std::string>& args) {
             steps_path = value();
         else if (a == "--json")
             json = true;
+        else if (a == "--plot")
+            plot_path = value();
+        else if (a == "--map")
+            map_path = value();
+        else if (a == "--origin") {
+            const std::vector<double> v = pednav::cli::parse_numbers(value(), 3, a);
+            origin = pednav::geodesy::GeodeticPoint{v[0], v[1], v[2]};
+        }
         else
             throw pednav::cli::UsageError("unknown option " + a);
     }
     if (track_path.empty()) throw pednav::cli::UsageError("--track is required");
     if (truth_path.empty() && kind.rfind("loop", 0) != 0)
         throw pednav::cli::UsageError("--truth is required");
+    if (!map_path.empty() && plot_path.empty()) throw pednav::cli::UsageError("--map draws the --plot: give both");
     try {
         Track track = read_track_csv(track_path);
         if (!steps_path.empty()) {
@@ -75,7 +91,22 @@ int pednav_cmd_eval(const std::vector<std::string>& args) {
             std::printf("%s\n", to_json(m).dump(2).c_str());
         else
             std::fputs(format_table(m).c_str(), stdout);
+        if (!plot_path.empty()) {
+            if (map_path.empty()) {
+                pednav::plot::write_text_file(plot_path, pednav::plot::render_walk(pednav::plot::walk_plot(track_path, track, &truth, &m)));
+            } else {
+                const std::string doc = pednav::cli::read_text_file(map_path);
+                const pednav::indoor_map::Map map = pednav::indoor_map::read_geojson_map(doc, origin);
+                pednav::plot::write_text_file(
+                    plot_path, pednav::plot::render_map_panels(
+                                   track_path, pednav::plot::walk_floor_panels(track, &truth, &m, map,
+                                                                               pednav::plot::landmark_names(doc, map))));
+            }
+        }
         return 0;
+    } catch (const pednav::indoor_map::MapError& e) {
+        std::fprintf(stderr, "pednav eval: %s:%s: %s\n", map_path.c_str(), e.pointer.c_str(), e.what());
+        return 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "pednav eval: %s\n", e.what());
         return 1;

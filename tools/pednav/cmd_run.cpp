@@ -27,7 +27,8 @@ constexpr const char* kUsage =
     "  --start, --heading  the start point (m) and heading (deg clockwise from north), when known\n"
     "  --origin  the geodetic origin (WGS-84 of ENU 0,0,0, the start point by default): given to the\n"
     "            engine and used by --geojson and --gpx\n"
-    "  --map     a map (GeoJSON, docs/maps.md) for the pipeline's map matcher\n"
+    "  --map     a map (GeoJSON, docs/maps.md) for the pipeline's map matcher; --plot then draws the\n"
+    "            track over it, one panel per floor\n"
     "exit status: 0 done, 1 an error (or plugin failures: outputs still written), 2 a usage mistake\n";
 
 }  // namespace
@@ -139,7 +140,11 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         out << io::run_summary_json(log, r.describe_json, r.positions, r.strides, r.warnings).dump(2) << "\n";
         if (!out) throw std::runtime_error("cannot write " + summary);
     }
-    if (!plot.empty()) cli::write_run_plot(plot, input, r);
+    if (!plot.empty()) {
+        std::optional<geodesy::GeodeticPoint> map_origin;
+        if (origin.known) map_origin = geodesy::GeodeticPoint{origin.lat_deg, origin.lon_deg, origin.height_m};
+        cli::write_run_plot(plot, input, r, map_path, map_origin);
+    }
     if (r.plugin_failures > 0) {
         // The outputs are written, but the run did not do its job cleanly.
         std::fprintf(stderr, "pednav run: %llu plugin failure%s (see the warnings above); outputs written\n",
