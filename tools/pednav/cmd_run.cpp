@@ -38,7 +38,8 @@ constexpr const char* kUsage =
     "            from the first good GNSS fix)\n"
     "  --geo-csv the track in latitude/longitude: t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m\n"
     "  --geojson-points  a Point per position (0.1 s apart) with its source, floor, heading and sigma\n"
-    "  --map     a map (GeoJSON, docs/maps.md) for the pipeline's map matcher\n"
+    "  --map     a map (GeoJSON, docs/maps.md) for the pipeline's map matcher; --plot then draws the\n"
+    "            track over it, one panel per floor\n"
     "exit status: 0 done, 1 an error (or plugin failures: outputs still written), 2 a usage mistake\n";
 
 // A reader's notes and its first issues on stderr, each line prefixed by `what`.
@@ -206,7 +207,11 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         out << j.dump(2) << "\n";
         if (!out) throw std::runtime_error("cannot write " + summary);
     }
-    if (!plot.empty()) cli::write_run_plot(plot, input, r);
+    if (!plot.empty()) {
+        std::optional<geodesy::GeodeticPoint> map_origin;
+        if (origin.known) map_origin = geodesy::GeodeticPoint{origin.lat_deg, origin.lon_deg, origin.height_m};
+        cli::write_run_plot(plot, input, r, map_path, map_origin);
+    }
     if (r.plugin_failures > 0) {
         // The outputs are written, but the run did not do its job cleanly.
         std::fprintf(stderr, "pednav run: %llu plugin failure%s (see the warnings above); outputs written\n",
