@@ -18,6 +18,7 @@ constexpr const char* kUsage =
     "usage: pednav sim --route FILE|NAME --out DIR [--mount foot|chest|handheld|waist] [--rate HZ] [--seed N]\n"
     "                  [--no-errors] [--mounting ROLL,PITCH,YAW] [--no-mag] [--no-baro] [--no-gnss]\n"
     "                  [--mag-rate HZ] [--baro-rate HZ] [--heel-strike-g G] [--surge M] [--jitter S]\n"
+    "                  [--gnss-jump T,DURATION,EAST,NORTH]...\n"
     "       pednav sim --list\n"
     "  --route     a route JSON file (pednav-route/1) or a built-in route name\n"
     "  --mounting  sensor axes in the foot/body frame, degrees (default 0,0,0)\n"
@@ -26,7 +27,8 @@ constexpr const char* kUsage =
     "  --heel-strike-g  foot: landing transient of this peak acceleration on level floors (default 0)\n"
     "  --surge     chest/handheld/waist: forward oscillation of the trunk at the step frequency, m\n"
     "              (default: handheld 0.02, chest and waist 0)\n"
-    "  --jitter    irregular sample times: each sample moved by up to +-S seconds (below half the interval)\n";
+    "  --jitter    irregular sample times: each sample moved by up to +-S seconds (below half the interval)\n"
+    "  --gnss-jump  multipath: from T s for DURATION s every fix is EAST, NORTH metres off (repeatable)\n";
 
 }  // namespace
 
@@ -68,7 +70,16 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
             options.time_jitter_s = pednav::cli::parse_numbers(value(), 1, a)[0];
         else if (a == "--heel-strike-g")
             options.heel_strike_g = pednav::cli::parse_numbers(value(), 1, a)[0];
-        else if (a == "--mounting") {
+        else if (a == "--gnss-jump") {
+            const std::vector<double> v = pednav::cli::parse_numbers(value(), 4, a);
+            if (v[0] < 0 || v[1] <= 0) throw pednav::cli::UsageError("--gnss-jump needs T >= 0 and DURATION > 0");
+            GnssJump jump;
+            jump.t_s = v[0];
+            jump.duration_s = v[1];
+            jump.offset_enu_m[0] = v[2];
+            jump.offset_enu_m[1] = v[3];
+            options.gnss_jumps.push_back(jump);
+        } else if (a == "--mounting") {
             const std::vector<double> rpy = pednav::cli::parse_numbers(value(), 3, a);
             std::copy(rpy.begin(), rpy.end(), options.mounting_rpy_deg);
         } else if (a == "--list") {
