@@ -36,13 +36,16 @@ void StepGnssEkf::predict_step(double model_length_m, double dpsi_rad, double fr
         forget_speed();
         stopped_ = false;
     }
-    // eq. (4.15), heading as azimuth: the step is taken along the new heading
-    // with the new length.
+    // eq. (4.15), heading as azimuth, with the step taken along the mean of
+    // the headings at its two ends (the heading change over it is known; the
+    // paper's psi_k, the heading at its start, puts each turning step off by
+    // half its turn), and with the new length.
+    const double psi_mid = x_(PSI) + 0.5 * dpsi_rad;
     x_(PSI) = navmath::wrap_pi(x_(PSI) + dpsi_rad);
     x_(L) += model_length_m - last_model_m_;
     last_model_m_ = model_length_m;
     frequency_hz_ = frequency_hz;
-    const double s = std::sin(x_(PSI)), c = std::cos(x_(PSI)), l = x_(L);
+    const double s = std::sin(psi_mid), c = std::cos(psi_mid), l = x_(L);
     x_(E) += l * s;
     x_(N) += l * c;
     // eq. (4.16) for E += L sin psi, N += L cos psi.

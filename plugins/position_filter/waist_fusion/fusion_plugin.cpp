@@ -107,6 +107,8 @@ public:
       "description": "... of at least this many satellites (when known) ..."},
     "gnss_consistent_chi2": {"type": "number", "minimum": 0.01, "maximum": 1e6, "default": 9,
       "description": "... that agrees with the steps: normalised innovation squared at most this"},
+    "gnss_sd_scale": {"type": "number", "minimum": 1, "maximum": 100, "default": 3,
+      "description": "fix errors are correlated over tens of seconds (atmosphere, multipath) and the filter takes them as independent: each fix counts with its sd (h_accuracy / sqrt 2 per axis) times this"},
     "gnss_fused_sd_scale": {"type": "number", "minimum": 1, "maximum": 100, "default": 2,
       "description": "a fix that is not good by accuracy and satellites (fused mode) counts with its sd times this"},
     "gnss_timeout_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 3,
@@ -138,6 +140,7 @@ public:
           baro_sd_m_(p.number("baro_altitude_sd_m")),
           use_gnss_(p.boolean("use_gnss")),
           fused_sd_scale_(p.number("gnss_fused_sd_scale")),
+          gnss_sd_scale_(p.number("gnss_sd_scale")),
           ekf_(pednav::pdr_fusion::step_gnss_ekf_config(p)),
           mode_(pednav::pdr_fusion::gnss_mode_config(p)),
           altimeter_(pednav::barometry::barometric_altimeter_config(p, "baro_")) {
@@ -173,7 +176,7 @@ public:
         double enu[3];
         pednav::geodesy::geodetic_to_enu({o.lat_deg, o.lon_deg, o.height_m}, g.lat_deg, g.lon_deg, g.height_m, enu);
         // Per axis; a fix that cannot be good on its own counts for less (fused).
-        const double sd_m = g.h_accuracy_m / std::sqrt(2.0) *
+        const double sd_m = gnss_sd_scale_ * g.h_accuracy_m / std::sqrt(2.0) *
                             (mode_.may_be_good(g.h_accuracy_m, g.satellites) ? 1.0 : fused_sd_scale_);
         const bool has_vel = (g.header.flags & PN_GNSS_FLAG_HAS_VELOCITY) != 0;
         if (!ekf_.started()) {
@@ -292,7 +295,7 @@ private:
     bool use_baro_;
     double baro_sd_m_;
     bool use_gnss_;
-    double fused_sd_scale_;
+    double fused_sd_scale_, gnss_sd_scale_;
     StepGnssEkf ekf_;
     pednav::pdr_fusion::GnssMode mode_;
     pednav::barometry::BarometricAltimeter altimeter_;

@@ -8,13 +8,15 @@
 // Per step k -> k+1 (eq. 4.15 as corrected), with the heading change of the
 // attitude estimator over the step dpsi and the step-length model's value
 // Lm (pednav_pdr):
-//   psi' = psi + dpsi,   L' = L + (Lm_{k+1} - Lm_k),
-//   E' = E + L' sin psi',   N' = N + L' cos psi',   S' = S,   A' = A,
+//   psi' = psi + dpsi,   L' = L + (Lm_{k+1} - Lm_k),   pm = psi + dpsi/2,
+//   E' = E + L' sin pm,   N' = N + L' cos pm,   S' = S,   A' = A
+// (the step along the mean of its end headings: the paper's psi_k, the
+// heading at the step's start, puts a turning step off by half its turn),
 // so what GNSS teaches the filter about the walking direction (the offset
 // between the sensor's heading and it) and about the step length (the
 // model's error for this walker) stays in psi and L through an outage. The
-// Jacobian (eq. 4.16 for this convention) has dE'/dpsi = L' cos psi',
-// dE'/dL = sin psi', dN'/dpsi = -L' sin psi', dN'/dL = cos psi'. Then the
+// Jacobian (eq. 4.16 for this convention) has dE'/dpsi = L' cos pm,
+// dE'/dL = sin pm, dN'/dpsi = -L' sin pm, dN'/dL = cos pm. Then the
 // paper's INS pseudo-observation S_INS = L' f (eq. 4.22; f the step
 // frequency, sd model_speed_sd_mps) as an observation of S alone (the step
 // timing must not move L). Its L_INS (the model's length) is the
