@@ -9,7 +9,6 @@
 #include <cmath>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <pednav_sim/route.hpp>
 #include <pednav_sim/simulate.hpp>
 #include <pednav_waist_eval/sim_scores.hpp>
@@ -33,47 +32,11 @@ sim::SimOptions options(uint64_t seed, bool gnss) {
     o.mag_rate_hz = 50.0;
     return o;
 }
-// The longest gap between fixes: [last fix before it, first fix after it].
-std::pair<double, double> longest_gap_s(const std::vector<pn_gnss_t>& fixes) {
-    std::pair<double, double> gap{0, 0};
-    for (size_t i = 1; i < fixes.size(); ++i) {
-        const double a = fixes[i - 1].header.t_ns * 1e-9, b = fixes[i].header.t_ns * 1e-9;
-        if (b - a > gap.second - gap.first) gap = {a, b};
-    }
-    return gap;
-}
-// Inside [t0, t1]: the largest growth of the error vector since the last
-// output at or before t0, and the distance walked from there to t1.
-struct Drift {
-    double max_m = 0, walked_m = 0;
-};
-Drift drift_in(const std::vector<OutputError>& errors, double t0, double t1) {
-    const OutputError* ref = nullptr;
-    for (const OutputError& e : errors)
-        if (e.t_s <= t0) ref = &e;
-    REQUIRE_MESSAGE(ref != nullptr, "no output before " << t0 << " s");
-    Drift d;
-    for (const OutputError& e : errors) {
-        if (e.t_s <= t0 || e.t_s > t1) continue;
-        d.max_m = std::max(d.max_m, std::hypot(e.err_e_m - ref->err_e_m, e.err_n_m - ref->err_n_m));
-        d.walked_m = e.walked_m - ref->walked_m;
-    }
-    return d;
-}
-double mean_accuracy_m(const std::vector<pn_gnss_t>& fixes) {
-    double s = 0;
-    for (const pn_gnss_t& g : fixes) s += g.h_accuracy_m;
-    return s / static_cast<double>(fixes.size());
-}
-// Mean error of the outputs of `source` (after the first `skip_s` of them).
-double mean_error_of(const std::vector<OutputError>& errors, int source, int* count) {
-    double s = 0;
-    int n = 0;
-    for (const OutputError& e : errors)
-        if (e.source == source) s += e.err_h_m, ++n;
-    *count = n;
-    return n ? s / n : NAN;
-}
+using waist_eval::Drift;
+using waist_eval::drift_in;
+using waist_eval::mean_error_of;
+std::pair<double, double> longest_gap_s(const std::vector<pn_gnss_t>& f) { return waist_eval::longest_gnss_gap_s(f); }
+double mean_accuracy_m(const std::vector<pn_gnss_t>& f) { return waist_eval::mean_h_accuracy_m(f); }
 int source_at(const std::vector<OutputError>& errors, double t_s) {
     int s = -1;
     for (const OutputError& e : errors)
@@ -200,32 +163,11 @@ TEST_CASE("issue 14: simulated outdoor_indoor: the mode follows the fixes' quali
 }
 
 TEST_CASE("issue 14: simulated long outdoor walk with a 60 s GNSS outage: drift under 2 % of the distance in it") {
-    // Two laps of a 100 m x 60 m block outdoors; the fixes of 60 s in the
-    // second lap are removed.
-    const nlohmann::json doc = {
-        {"format", "pednav-route/1"},
-        {"name", "block_laps"},
-        {"start_still_s", 10},
-        {"end_still_s", 5},
-        {"waypoints",
-         {{0, 0, 0},
-          {{"enu_m", {100, 0, 0}}, {"outdoor", true}},
-          {{"enu_m", {100, 60, 0}}, {"outdoor", true}},
-          {{"enu_m", {0, 60, 0}}, {"outdoor", true}},
-          {{"enu_m", {0, 0, 0}}, {"outdoor", true}},
-          {{"enu_m", {100, 0, 0}}, {"outdoor", true}},
-          {{"enu_m", {100, 60, 0}}, {"outdoor", true}},
-          {{"enu_m", {0, 60, 0}}, {"outdoor", true}},
-          {{"enu_m", {0, 0, 0}}, {"outdoor", true}}}}};
-    const sim::Route route = sim::parse_route(doc);
+    const sim::Route route = waist_eval::block_laps_route();
     std::vector<double> drift_pct, gnss_err;
     for (uint64_t seed : {1, 2, 3}) {
         sim::SimOutput out = sim::simulate(route, options(seed, true));
-        const double t0 = 300.0, t1 = 360.0;
-        std::vector<pn_gnss_t> kept;
-        for (const pn_gnss_t& g : out.gnss)
-            if (g.header.t_ns * 1e-9 < t0 || g.header.t_ns * 1e-9 > t1) kept.push_back(g);
-        out.gnss = kept;
+        waist_eval::remove_fixes(out, waist_eval::kBlockOutageStartS, waist_eval::kBlockOutageEndS);
         const ReplayResult r = waist_eval::run_sim_waist(out, route, waist(), kPlugins);
         const std::vector<OutputError> errors = waist_eval::output_errors(r, out);
         const auto gap = longest_gap_s(out.gnss);
@@ -270,4 +212,20 @@ TEST_CASE("issue 14: simulated stairs: steps labelled upstairs and downstairs fr
                                 << s.down_labelled_down << " of " << s.down_steps << ", level steps labelled stairs "
                                 << s.level_labelled_stairs << " of " << s.level_steps);
     }
+}
+
+TEST_CASE("simulated building tour: turns on the spot in pauses keep the walking direction (no GNSS)") {
+    // Stops at doors, turning on the spot before walking on: the turn made
+    // while standing is applied before the next step, not spread over it.
+    const sim::Route route = sim::builtin_route("building_tour");
+    const sim::SimOutput out = sim::simulate(route, options(1, false));
+    const ReplayResult r = waist_eval::run_sim_waist(out, route, waist(), kPlugins);
+    double worst_deg = 0;
+    for (const pn_position_t& p : r.positions) {
+        const size_t i = std::min(out.truth.size() - 1, static_cast<size_t>(std::llround(p.header.t_ns * 1e-9 * out.rate_hz)));
+        if (out.truth[i].stance) continue;  // standing: the truth's heading is the body's, mid-turn
+        worst_deg = std::max(worst_deg, std::abs(std::remainder(p.heading_rad * 180 / M_PI - out.truth[i].heading_deg, 360.0)));
+    }
+    MESSAGE("building tour, walking direction against the truth at every step: worst " << worst_deg << " deg");
+    CHECK(worst_deg < 10.0);
 }

@@ -22,6 +22,8 @@ const AttitudeEkfConfig& checked(const AttitudeEkfConfig& c) {
         !(c.mag_heading_sd_rad > 0))
         throw std::invalid_argument("measurement sds must be > 0");
     if (!(c.max_dt_s > 0)) throw std::invalid_argument("max_dt_s must be > 0");
+    if (!(c.mag_gate_chi2 > 0) || c.mag_max_rejections < 1)
+        throw std::invalid_argument("mag_gate_chi2 must be > 0 and mag_max_rejections >= 1");
     return c;
 }
 constexpr double kDeg = M_PI / 180.0;
@@ -186,8 +188,16 @@ void AttitudeEkf::on_mag(int64_t t_ns, const Vec3& m) {
     t_last_mag_update_ns_ = t_ns;
     const double psi_mag = navmath::magnetic_heading(up_b, m) + c_.declination_deg * kDeg;
     const double y = navmath::wrap_pi(psi_mag - navmath::heading_of(q_));
-    if (yaw_source_ != YawSource::magnetometer && yaw_source_ != YawSource::app) {
-        // The first accepted field gives the yaw outright.
+    // A field the gate lets through may still be disturbed (a magnet can
+    // keep the strength and dip): heading innovations beyond mag_gate_chi2
+    // are rejected, unless mag_max_rejections in a row say the heading is
+    // what is wrong.
+    const double s2 = P_(2, 2) + c_.mag_heading_sd_rad * c_.mag_heading_sd_rad;
+    const bool outlier = y * y > c_.mag_gate_chi2 * s2;
+    if (outlier && yaw_source_ == YawSource::magnetometer && ++mag_rejections_ < c_.mag_max_rejections) return;
+    mag_rejections_ = 0;
+    if (outlier || (yaw_source_ != YawSource::magnetometer && yaw_source_ != YawSource::app)) {
+        // The first accepted field (or a heading found wrong) gives the yaw outright.
         rotate_yaw(y);
         P_.row(2).setZero();
         P_.col(2).setZero();

@@ -69,6 +69,8 @@ void StepGnssEkf::predict_step(double model_length_m, double dpsi_rad, double fr
               Eigen::Matrix<double, 1, 1>(sq(c_.model_speed_sd_mps)));
 }
 
+void StepGnssEkf::turn(double dpsi_rad) { x_(PSI) = navmath::wrap_pi(x_(PSI) + dpsi_rad); }
+
 void StepGnssEkf::standing() {
     forget_speed();
     x_(S) = 0.0;

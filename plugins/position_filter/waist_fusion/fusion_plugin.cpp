@@ -11,7 +11,9 @@
 // One PN_REC_POSITION and one PN_REC_STRIDE per step; a position for each
 // static step record (the walker stopped).
 #include <cmath>
+#include <algorithm>
 #include <memory>
+#include <vector>
 
 #include <pednav_barometry/barometric_altimeter.hpp>
 #include <pednav_geodesy/enu.hpp>
@@ -67,7 +69,7 @@ public:
       "description": "process noise of the speed per step (w_S)"},
     "altitude_sd_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.1,
       "description": "process noise of the altitude per step (w_A)"},
-    "heading_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 0, "maximum": 1, "default": 0.002,
+    "heading_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 0, "maximum": 1, "default": 0.001,
       "description": "process noise of the walking direction per step (w_psi)"},
     "step_length_sd_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 1, "default": 0.002,
       "description": "process noise of the step length's offset from the model per step (w_L)"},
@@ -154,10 +156,13 @@ public:
             // The rotation between the two records in ENU; its vertical part
             // is the heading change (counter-clockwise positive about up).
             const Vec3 r = pednav::navmath::quat_log(pednav::navmath::quat_mul_unit(q, q_.conjugate()));
-            if (r.norm() < heading_jump_rad_) dpsi_rad_ -= r.z();
+            if (r.norm() < heading_jump_rad_) yaw_rad_ -= r.z();
         }
         q_ = q;
         has_q_ = true;
+        yaw_t_[yaw_n_ % kYawRing] = a.header.t_ns;
+        yaw_v_[yaw_n_ % kYawRing] = yaw_rad_;
+        ++yaw_n_;
     }
 
     void on_baro(const pn_baro_t& b) override {
@@ -209,8 +214,9 @@ public:
     void on_step(const pn_step_t& s) override {
         if (s.motion_mode == PN_STEP_MODE_STATIC) {
             if (!ekf_.started()) return;
+            ekf_.turn(yaw_rad_ - yaw_applied_rad_);  // turned since the last step
+            yaw_applied_rad_ = yaw_rad_;
             ekf_.standing();
-            dpsi_rad_ = 0;
             emit_position(s.header.t_ns);
             return;
         }
@@ -218,8 +224,13 @@ public:
         if (!ekf_.started()) start(start_pos_[0], start_pos_[1], start_pos_[2], start_heading());
         const double before[2] = {ekf_.x()(StepGnssEkf::E), ekf_.x()(StepGnssEkf::N)};
         const double psi_before = ekf_.x()(StepGnssEkf::PSI);
-        ekf_.predict_step(lm, dpsi_rad_, s.frequency_hz);
-        dpsi_rad_ = 0;
+        // The heading change before the step began (a turn on the spot in a
+        // pause) turns the walker where he stands; the one within the step
+        // goes with it.
+        const double yaw_start = yaw_at(s.t_start_ns);
+        ekf_.turn(yaw_start - yaw_applied_rad_);
+        ekf_.predict_step(lm, yaw_rad_ - yaw_start, s.frequency_hz);
+        yaw_applied_rad_ = yaw_rad_;
         t_last_step_ns_ = s.header.t_ns;
         if (use_baro_ && altimeter_.ready()) ekf_.altitude(start_pos_[2] + altimeter_.altitude_m(), baro_sd_m_);
         const auto& x = ekf_.x();
@@ -258,7 +269,17 @@ private:
     }
     void start(double e, double n, double a, double psi) {
         ekf_.start(e, n, a, psi, pednav::pdr::step_length_m(model_, typical_range_mps2_));
-        dpsi_rad_ = 0;
+        yaw_applied_rad_ = yaw_rad_;
+    }
+    // The attitude's accumulated heading at t: the newest record at or before
+    // it (the oldest kept when all are later).
+    double yaw_at(int64_t t_ns) const {
+        const uint64_t kept = std::min<uint64_t>(yaw_n_, kYawRing);
+        for (uint64_t i = 0; i < kept; ++i) {
+            const uint64_t k = (yaw_n_ - 1 - i) % kYawRing;
+            if (yaw_t_[k] <= t_ns || i + 1 == kept) return yaw_v_[k];
+        }
+        return yaw_rad_;
     }
 
     void emit_position(int64_t t_ns) {
@@ -302,7 +323,16 @@ private:
 
     Quat q_ = Quat::Identity();
     bool has_q_ = false;
-    double heading_rad_ = 0, dpsi_rad_ = 0;
+    double heading_rad_ = 0;
+    // The attitude's heading accumulated from its rotations about the
+    // vertical (clockwise), what of it the filter has applied, and a ring of
+    // its recent values by time (4096 records: 20 s at 200 Hz, longer than
+    // any step).
+    static constexpr uint64_t kYawRing = 4096;
+    double yaw_rad_ = 0, yaw_applied_rad_ = 0;
+    std::vector<int64_t> yaw_t_ = std::vector<int64_t>(kYawRing);
+    std::vector<double> yaw_v_ = std::vector<double>(kYawRing);
+    uint64_t yaw_n_ = 0;
     double start_pos_[3] = {0, 0, 0};
     double start_heading_rad_ = 0;
     bool has_start_heading_ = false;

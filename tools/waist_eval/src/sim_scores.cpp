@@ -2,12 +2,14 @@
 #include <pednav_waist_eval/sim_scores.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <pednav_sim/route.hpp>
 #include <pednav_sim/simulate.hpp>
 
 namespace pednav::waist_eval {
@@ -69,6 +71,66 @@ StairsScore stairs_score(const ReplayResult& r, const sim::SimOutput& out) {
         else if (std::abs(vz) < 0.02) ++s.level_steps, s.level_labelled_stairs += up || down;
     }
     return s;
+}
+
+std::pair<double, double> longest_gnss_gap_s(const std::vector<pn_gnss_t>& fixes) {
+    std::pair<double, double> gap{0, 0};
+    for (size_t i = 1; i < fixes.size(); ++i) {
+        const double a = static_cast<double>(fixes[i - 1].header.t_ns) * 1e-9,
+                     b = static_cast<double>(fixes[i].header.t_ns) * 1e-9;
+        if (b - a > gap.second - gap.first) gap = {a, b};
+    }
+    return gap;
+}
+
+Drift drift_in(const std::vector<OutputError>& errors, double t0, double t1) {
+    const OutputError* ref = nullptr;
+    for (const OutputError& e : errors)
+        if (e.t_s <= t0) ref = &e;
+    if (!ref) throw std::runtime_error("no output before the outage at " + std::to_string(t0) + " s");
+    Drift d;
+    for (const OutputError& e : errors) {
+        if (e.t_s <= t0 || e.t_s > t1) continue;
+        d.max_m = std::max(d.max_m, std::hypot(e.err_e_m - ref->err_e_m, e.err_n_m - ref->err_n_m));
+        d.walked_m = e.walked_m - ref->walked_m;
+    }
+    return d;
+}
+
+double mean_error_of(const std::vector<OutputError>& errors, int source, int* count) {
+    double s = 0;
+    int n = 0;
+    for (const OutputError& e : errors)
+        if (e.source == source) s += e.err_h_m, ++n;
+    if (count) *count = n;
+    return n ? s / n : NAN;
+}
+
+double mean_h_accuracy_m(const std::vector<pn_gnss_t>& fixes) {
+    double s = 0;
+    for (const pn_gnss_t& g : fixes) s += g.h_accuracy_m;
+    return fixes.empty() ? NAN : s / static_cast<double>(fixes.size());
+}
+
+sim::Route block_laps_route() {
+    nlohmann::json waypoints = nlohmann::json::array({{0, 0, 0}});
+    for (int lap = 0; lap < 2; ++lap)
+        for (const auto& p : {std::array<double, 2>{100, 0}, {100, 60}, {0, 60}, {0, 0}})
+            waypoints.push_back({{"enu_m", {p[0], p[1], 0.0}}, {"outdoor", true}});
+    return sim::parse_route({{"format", "pednav-route/1"},
+                             {"name", "block_laps"},
+                             {"start_still_s", 10},
+                             {"end_still_s", 5},
+                             {"waypoints", waypoints}});
+}
+
+void remove_fixes(sim::SimOutput& out, double t0_s, double t1_s) {
+    std::vector<pn_gnss_t> kept;
+    for (const pn_gnss_t& g : out.gnss) {
+        const double t = static_cast<double>(g.header.t_ns) * 1e-9;
+        if (t < t0_s || t > t1_s) kept.push_back(g);
+    }
+    out.gnss = kept;
 }
 
 std::string waist_preset(const std::string& source_dir) {

@@ -21,7 +21,9 @@
 //   still: a window with |w| and |a| still: y = mean w_m - bg = dbg + v: gyro bias;
 //   magnetometer, while navmath::MagneticFieldGate accepts the reading:
 //     y = wrap(psi_mag + declination - psi) = -dphi_U + v (heading is
-//     clockwise, dphi_U counter-clockwise).
+//     clockwise, dphi_U counter-clockwise), rejected beyond mag_gate_chi2
+//     (a disturbance that keeps the strength and dip) unless
+//     mag_max_rejections in a row: then the field resets the yaw.
 // The correction is q <- exp(dphi) (x) q in ENU (the left-multiplied form of
 // eq. 4.6-4.7), bg += dbg, ba += dba.
 //
@@ -61,6 +63,8 @@ struct AttitudeEkfConfig {
     double declination_deg;                 // east positive: true heading = magnetic + declination
     double mag_heading_sd_rad;              // sd of one magnetometer heading
     double mag_update_s;                    // at most one magnetometer update per this long, s
+    double mag_gate_chi2;                   // heading innovations beyond this (normalised, squared) are rejected
+    int mag_max_rejections;                 // ... unless this many in a row: then the field resets the yaw
     navmath::MagneticFieldGateConfig mag_gate;
     double initial_heading_deg;             // yaw without magnetometer, app or GNSS, clockwise from north
     double gnss_course_min_speed_mps;       // a GNSS course sets the yaw at this speed or faster; 0 = never
@@ -92,6 +96,8 @@ AttitudeEkfConfig attitude_ekf_config(Params& p) {
     c.declination_deg = p.number("declination_deg");
     c.mag_heading_sd_rad = p.number("mag_heading_sd_rad");
     c.mag_update_s = p.number("mag_update_s");
+    c.mag_gate_chi2 = p.number("mag_gate_chi2");
+    c.mag_max_rejections = static_cast<int>(p.integer("mag_max_rejections"));
     c.mag_gate = navmath::magnetic_field_gate_config(p, "mag_");
     c.initial_heading_deg = p.number("initial_heading_deg");
     c.gnss_course_min_speed_mps = p.number("gnss_course_min_speed_mps");
@@ -153,6 +159,7 @@ private:
     YawSource yaw_source_ = YawSource::none;
     bool mag_used_ = false;
     int64_t mag_updates_ = 0;
+    int mag_rejections_ = 0;
     int64_t t_last_mag_update_ns_ = INT64_MIN / 2;
 
     // Before alignment: the current still run and the mean of everything.

@@ -106,6 +106,8 @@ public:
 
     // One step: the model's length, the heading change over it, its frequency (Hz, 0 = standing).
     void predict_step(double model_length_m, double dpsi_rad, double frequency_hz);
+    // A turn on the spot (between steps): psi += dpsi, no displacement.
+    void turn(double dpsi_rad);
     // Standing still: the speed is 0 (and the next bout's speed is unknown).
     void standing();
 

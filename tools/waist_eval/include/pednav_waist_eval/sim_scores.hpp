@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pednav_engine/replay.hpp>
@@ -39,6 +40,26 @@ struct StairsScore {
     int level_steps = 0, level_labelled_stairs = 0;
 };
 StairsScore stairs_score(const ReplayResult& r, const sim::SimOutput& out);
+
+// The longest gap between fixes: [last fix before it, first fix after it], s.
+std::pair<double, double> longest_gnss_gap_s(const std::vector<pn_gnss_t>& fixes);
+
+// Inside (t0, t1]: the largest growth of the error vector since the last
+// output at or before t0, and the distance walked from there to t1.
+struct Drift {
+    double max_m = 0, walked_m = 0;
+};
+Drift drift_in(const std::vector<OutputError>& errors, double t0_s, double t1_s);
+
+// Mean horizontal error of the outputs of `source`, and how many there are.
+double mean_error_of(const std::vector<OutputError>& errors, int source, int* count);
+double mean_h_accuracy_m(const std::vector<pn_gnss_t>& fixes);
+
+// Two laps of a 100 m x 60 m block outdoors (640 m, 8 turns): the long walk
+// the 60 s GNSS outage is cut from (fixes of 300 to 360 s removed).
+sim::Route block_laps_route();
+constexpr double kBlockOutageStartS = 300.0, kBlockOutageEndS = 360.0;
+void remove_fixes(sim::SimOutput& out, double t0_s, double t1_s);
 
 // The waist preset (configs/waist.json) read from the source tree.
 std::string waist_preset(const std::string& source_dir);
