@@ -53,7 +53,6 @@ void PeakStepDetector::reset() {
     yaw_rad_ = 0;
     min_since_candidate_ = HUGE_VAL;
     bout_open_ = has_pending_ = false;
-    t_emitted_ns_ = 0;
     steps_ = 0;
     alt_n_ = 0;
 }
@@ -172,7 +171,6 @@ void PeakStepDetector::emit_step(const Candidate& c, int64_t t_start_ns, double 
 }
 
 void PeakStepDetector::emit(const StepEvent& e) {
-    t_emitted_ns_ = e.t_ns;
     if (sink_) sink_(sink_user_, e);
 }
 

@@ -206,7 +206,6 @@ public:
             r = ekf_.gnss_position(enu[0], enu[1], sd_m, dt_s);
         }
         if (r.recovered) recovered_ = true, ++recoveries_;
-        if (!r.accepted) ++rejected_fixes_;
         if (r.accepted && has_vel) ekf_.gnss_velocity(g.vel_enu_mps[0], g.vel_enu_mps[1], 0.0);
         mode_.judge(g.header.t_ns, r.accepted, g.h_accuracy_m, g.satellites, r.nis);
     }
@@ -338,7 +337,6 @@ private:
     bool has_start_heading_ = false;
     bool ever_fixed_ = false, recovered_ = false;
     uint32_t recoveries_ = 0;
-    int64_t rejected_fixes_ = 0;
     int64_t t_last_step_ns_ = 0;
     int32_t stride_index_ = 0;
 };

@@ -157,7 +157,6 @@ private:
     Candidate last_{}, pending_{};
     int64_t last_start_ns_ = 0;  // the last step's start and the yaw there
     double last_start_yaw_ = 0;
-    int64_t t_emitted_ns_ = 0;
     int64_t steps_ = 0;
 
     // Altitude readings for C3, a ring of (t, altitude).
