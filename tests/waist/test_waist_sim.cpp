@@ -95,7 +95,7 @@ TEST_CASE("issue 14: simulated outdoor_indoor: under the fixes' accuracy with GN
         CHECK(n_gnss > 50);
         CHECK(err_gnss < mean_accuracy_m(out.gnss));
         CHECK(d.walked_m > 70.0);
-        // The issue's target is 2 %; measured 1.9, 1.5 and 2.8 % (the
+        // The issue's target is 2 %; measured 2.1, 1.5 and 2.7 % (the
         // heading GNSS teaches outdoors is good to about a degree, and the
         // magnetometer's hard-iron residual moves it by as much indoors).
         CHECK(d.max_m < 0.03 * d.walked_m);
@@ -180,7 +180,7 @@ TEST_CASE("issue 14: simulated long outdoor walk with a 60 s GNSS outage: drift 
         CAPTURE(err_gnss);
         CHECK(gap.second - gap.first > 59.0);
         CHECK(d.walked_m > 70.0);
-        CHECK(d.max_m < 0.03 * d.walked_m);  // the issue's target 2 %; measured 2.0 to 2.5 %
+        CHECK(d.max_m < 0.03 * d.walked_m);  // the issue's target 2 %; measured 1.5 to 2.2 %
         CHECK(err_gnss < mean_accuracy_m(out.gnss));
         drift_pct.push_back(100.0 * d.max_m / d.walked_m);
         gnss_err.push_back(err_gnss);
