@@ -6,11 +6,17 @@
 // the figures would not be those of the whole pipeline.
 //
 //   pipeline_throughput [--mount foot] [--passes 5] [--rate 200] [--single-pass]
+//                       [--route corridor_loop] [--gnss-rate 1] [--baro-rate 0]
+//
+// --route: the simulated walk (a built-in route; outdoor_indoor has GNSS on
+// its outdoor segments), --gnss-rate its fix rate, --baro-rate the
+// barometer's (0: with every IMU sample, as the magnetometer).
 //
 // --single-pass runs one pass of the IMU-only input and brackets the push loop
 // with callgrind client requests, for
 //   valgrind --tool=callgrind --instr-atstart=no pipeline_throughput --mount foot --single-pass
 // (see README "Speed"): instructions per sample = Ir / imu_samples.
+// --single-input all measures the input with every sensor instead.
 #include <valgrind/callgrind.h>
 
 #include <algorithm>
@@ -90,19 +96,31 @@ int main(int argc, char** argv) {
     int passes = 5;
     double rate_hz = 200;
     bool single = false;
+    std::string route = "corridor_loop";
+    double gnss_rate_hz = 1.0, baro_rate_hz = 0.0;
+    std::string single_input = "imu";
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--mount" && i + 1 < argc) mounts.push_back(argv[++i]);
         else if (a == "--passes" && i + 1 < argc) passes = std::atoi(argv[++i]);
         else if (a == "--rate" && i + 1 < argc) rate_hz = std::atof(argv[++i]);
         else if (a == "--single-pass") single = true;
+        else if (a == "--route" && i + 1 < argc) route = argv[++i];
+        else if (a == "--single-input" && i + 1 < argc) single_input = argv[++i];
+        else if (a == "--gnss-rate" && i + 1 < argc) gnss_rate_hz = std::atof(argv[++i]);
+        else if (a == "--baro-rate" && i + 1 < argc) baro_rate_hz = std::atof(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: %s [--mount M]... [--passes N] [--rate HZ] [--single-pass]\n", argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--mount M]... [--passes N] [--rate HZ] [--single-pass] [--route NAME]\n"
+                         "          [--gnss-rate HZ] [--baro-rate HZ] [--single-input imu|all]\n",
+                         argv[0]);
             return 2;
         }
     }
     if (mounts.empty()) mounts = {"foot", "chest", "handheld", "waist"};
-    std::printf("{\n  \"benchmark\": \"pipeline_throughput\",\n  \"rate_hz\": %.0f,\n  \"mounts\": [", rate_hz);
+    std::printf("{\n  \"benchmark\": \"pipeline_throughput\",\n  \"rate_hz\": %.0f,\n  \"route\": \"%s\",\n"
+                "  \"gnss_rate_hz\": %g,\n  \"baro_rate_hz\": %g,\n  \"mounts\": [",
+                rate_hz, route.c_str(), gnss_rate_hz, baro_rate_hz);
     bool first = true;
     size_t total_failures = 0;
     for (const auto& mount : mounts) {
@@ -112,15 +130,18 @@ int main(int argc, char** argv) {
         so.mount = mount;
         so.rate_hz = rate_hz;
         so.seed = 7;
-        const auto sim = pednav::sim::simulate(pednav::sim::builtin_route("corridor_loop"), so);
-        // Two inputs: every simulated sensor (IMU, magnetometer, barometer at the
-        // IMU rate), and the IMU alone.
+        so.gnss_rate_hz = gnss_rate_hz;
+        so.baro_rate_hz = baro_rate_hz;
+        const auto sim = pednav::sim::simulate(pednav::sim::builtin_route(route), so);
+        // Two inputs: every simulated sensor (IMU, magnetometer, barometer,
+        // GNSS on the route's outdoor segments), and the IMU alone.
         const auto all_records = sim.records();
         std::vector<const pn_record_header_t*> imu_records;
         for (const auto* r : all_records)
             if (r->type == PN_REC_IMU) imu_records.push_back(r);
         for (int variant = 0; variant < 2; ++variant) {
-            if (single && variant == 0) continue;  // callgrind: the IMU-only figure
+            // callgrind: one input, the IMU alone unless --single-input all
+            if (single && (variant == 0) != (single_input == "all")) continue;
             const auto& records = variant == 0 ? all_records : imu_records;
             double best = 1e300;
             PassResult last;
@@ -137,7 +158,7 @@ int main(int argc, char** argv) {
                         "\"outputs\": %zu, \"best_seconds\": %.6f, \"samples_per_second\": %.0f, "
                         "\"ns_per_sample\": %.1f, \"allocations_per_sample_steady_state\": %.4f, "
                         "\"push_failures\": %zu}",
-                        first ? "" : ",", mount.c_str(), variant == 0 ? "imu+mag+baro" : "imu", sim.imu.size(),
+                        first ? "" : ",", mount.c_str(), variant == 0 ? (sim.gnss.empty() ? "imu+mag+baro" : "imu+mag+baro+gnss") : "imu", sim.imu.size(),
                         records.size(), last.outputs, best, samples / best, best / samples * 1e9,
                         static_cast<double>(last.allocations_second_half) / (samples / 2), failures);
             first = false;

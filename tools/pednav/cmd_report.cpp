@@ -30,6 +30,7 @@
 #include "cli_common.hpp"
 #include "report_suite_chest.hpp"
 #include "report_suites.hpp"
+#include "waist_report_suite.hpp"
 
 namespace {
 
@@ -39,6 +40,7 @@ constexpr const char* kUsage =
     "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,handheld,waist] [--only TEXT] [--seed N]\n"
     "                     [--no-recordings] [--no-sim] [--plugin-dir DIR] [--patch JSON] [--detector NAME]\n"
     "       pednav report --suite full|quick|sim|sweep|tables|hupt|clip|chest [--data DIR] [--plugin-dir DIR]\n"
+    "       pednav report --suite waist [--data DIR] [--plugin-dir DIR]  (the waist pipeline's tables)\n"
     "                     [--patch JSON] [--detector NAME]\n"
     "  --data      the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the "
     "build)\n"
@@ -363,10 +365,26 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
                                           " is not an option of --suite chest");
         return run_chest_suite(data, plugin_dirs);
     }
+    if (suite == "waist") {
+        if (!accuracy_option.empty() || patched)
+            throw pednav::cli::UsageError((patched ? std::string("--patch/--detector") : accuracy_option) +
+                                          " is not an option of --suite waist");
+        try {
+            if (data.empty()) data = default_data_dir();
+            if (!exists(data)) throw std::runtime_error("no shared recordings at " + data + " (--data)");
+            pednav::cli::run_waist_suite(cli::read_text_file(cli::default_config_dir() + "/waist.json"),
+                                         cli::read_text_file(cli::default_config_dir() + "/foot.json"), data,
+                                         plugin_dirs);
+            return 0;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "pednav report: %s\n", e.what());
+            return 1;
+        }
+    }
     if (suite != "accuracy") {
         const auto& names = pednav::cli::foot_suite_names();
         if (std::find(names.begin(), names.end(), suite) == names.end())
-            throw pednav::cli::UsageError("unknown suite '" + suite + "' (accuracy, full, quick, sim, sweep, tables, hupt, clip, chest)");
+            throw pednav::cli::UsageError("unknown suite '" + suite + "' (accuracy, full, quick, sim, sweep, tables, hupt, clip, chest, waist)");
         if (!accuracy_option.empty())
             throw pednav::cli::UsageError(accuracy_option + " is an option of the accuracy suite, not of --suite " + suite);
         return run_suite(suite, {"", detector.empty() ? "shoe" : detector, detector_and_patch, data, plugin_dirs});

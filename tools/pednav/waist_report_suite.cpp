@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "waist_report_suite.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <pednav_eval/metrics.hpp>
+#include <pednav_sim/route.hpp>
+#include <pednav_sim/simulate.hpp>
+#include <pednav_waist_eval/ipol_scores.hpp>
+#include <pednav_waist_eval/sim_scores.hpp>
+
+namespace pednav::cli {
+
+namespace {
+
+void print_spread(const char* what, std::vector<double> v) {
+    std::printf("%s: mean %.2f median %.2f worst %.2f (%zu)\n", what,
+                v.empty() ? NAN : [&] {
+                    double s = 0;
+                    for (double x : v) s += x;
+                    return s / v.size();
+                }(),
+                eval::percentile(v, 50), eval::percentile(v, 100), v.size());
+}
+
+sim::SimOptions waist_options(uint64_t seed, bool gnss) {
+    sim::SimOptions o;
+    o.mount = "waist";
+    o.rate_hz = 100.0;
+    o.seed = seed;
+    o.with_gnss = gnss;
+    o.baro_rate_hz = 25.0;
+    o.mag_rate_hz = 50.0;
+    return o;
+}
+
+}  // namespace
+
+void run_waist_suite(const std::string& waist, const std::string& foot, const std::string& data_dir,
+                     const std::vector<std::string>& plugin_dirs) {
+    std::vector<double> step_diff, uturn_err;
+    for (const std::string& t : waist_eval::ipol_waist_trials()) {
+        const waist_eval::IpolWaistRun r = waist_eval::run_ipol_waist(data_dir, t, waist, plugin_dirs);
+        std::printf("ipol %-5s steps %2d footsteps %2d  U-turn %6.1f deg\n", t.c_str(), r.steps, r.footsteps,
+                    r.uturn_deg);
+        step_diff.push_back(std::abs(r.steps - r.footsteps));
+        uturn_err.push_back(std::abs(r.uturn_deg - 180.0));
+    }
+    print_spread("ipol |steps - footsteps|", step_diff);
+    print_spread("ipol |U-turn - 180| deg", uturn_err);
+
+    std::vector<double> rel, legs;
+    for (const waist_eval::LosoLeg& l : waist_eval::leave_one_subject_out(data_dir, waist, foot, plugin_dirs, 4.0)) {
+        const double e = 100.0 * (l.waist_m / l.foot_m - 1.0);
+        std::printf("ipol %-5s %-4s waist %6.2f m  foot %6.2f m  %+6.1f %%  (k %.3f without subject %s)\n",
+                    l.trial.c_str(), l.out ? "out" : "back", l.waist_m, l.foot_m, e, l.k, l.subject.c_str());
+        rel.push_back(std::abs(e));
+        legs.push_back(l.waist_m);
+    }
+    print_spread("ipol legs |waist / foot - 1| %", rel);
+    print_spread("ipol legs, m (protocol 10 m)", legs);
+
+    std::vector<double> closures;
+    const sim::Route loop = sim::builtin_route("corridor_loop");
+    for (uint64_t seed = 1; seed <= 5; ++seed) {
+        const sim::SimOutput out = sim::simulate(loop, waist_options(seed, false));
+        const auto errors = waist_eval::output_errors(waist_eval::run_sim_waist(out, loop, waist, plugin_dirs), out);
+        const double pct = errors.empty() ? NAN : 100.0 * errors.back().err_h_m / out.distance_m;
+        std::printf("sim corridor_loop seed %llu  closure %.2f %% of %.0f m (no GNSS)\n",
+                    static_cast<unsigned long long>(seed), pct, out.distance_m);
+        closures.push_back(pct);
+    }
+    print_spread("sim corridor_loop closure %", closures);
+
+    const sim::Route oi = sim::builtin_route("outdoor_indoor"), block = waist_eval::block_laps_route();
+    for (const sim::Route* route : {&oi, &block}) {
+        std::vector<double> drift, gnss_err;
+        for (uint64_t seed = 1; seed <= 5; ++seed) {
+            sim::SimOutput out = sim::simulate(*route, waist_options(seed, true));
+            if (route == &block)
+                waist_eval::remove_fixes(out, waist_eval::kBlockOutageStartS, waist_eval::kBlockOutageEndS);
+            const auto errors =
+                waist_eval::output_errors(waist_eval::run_sim_waist(out, *route, waist, plugin_dirs), out);
+            const auto gap = waist_eval::longest_gnss_gap_s(out.gnss);
+            const waist_eval::Drift d = waist_eval::drift_in(errors, gap.first, gap.second);
+            int n = 0;
+            const double err = waist_eval::mean_error_of(errors, PN_POSITION_SOURCE_GNSS, &n);
+            std::printf("sim %-14s seed %llu  outage %.0f s, %.0f m: drift %.2f m (%.2f %%); GNSS mode error %.2f m "
+                        "(fixes' h_accuracy %.2f m)\n",
+                        route->name.c_str(), static_cast<unsigned long long>(seed), gap.second - gap.first,
+                        d.walked_m, d.max_m, 100.0 * d.max_m / d.walked_m, err, waist_eval::mean_h_accuracy_m(out.gnss));
+            drift.push_back(100.0 * d.max_m / d.walked_m);
+            gnss_err.push_back(err);
+        }
+        print_spread(("sim " + route->name + " outage drift %").c_str(), drift);
+        print_spread(("sim " + route->name + " GNSS mode error m").c_str(), gnss_err);
+    }
+
+    const sim::Route stairs = sim::builtin_route("stairs");
+    for (uint64_t seed = 1; seed <= 5; ++seed) {
+        const sim::SimOutput out = sim::simulate(stairs, waist_options(seed, false));
+        const waist_eval::StairsScore s =
+            waist_eval::stairs_score(waist_eval::run_sim_waist(out, stairs, waist, plugin_dirs), out);
+        std::printf("sim stairs seed %llu  up %d/%d  down %d/%d  level labelled stairs %d/%d\n",
+                    static_cast<unsigned long long>(seed), s.up_labelled_up, s.up_steps, s.down_labelled_down,
+                    s.down_steps, s.level_labelled_stairs, s.level_steps);
+    }
+}
+
+}  // namespace pednav::cli

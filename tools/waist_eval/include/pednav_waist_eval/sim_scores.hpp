@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: Apache-2.0
+// Simulated waist walks (pednav_sim) through the waist pipeline, scored
+// against their exact truth: the error of every output, by its source, and
+// the steps' motion modes against the route's stairs.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pednav_engine/replay.hpp>
+
+namespace pednav::sim {
+struct SimOutput;
+struct Route;
+}  // namespace pednav::sim
+
+namespace pednav::waist_eval {
+
+// Replays the simulated records (the caller may have changed out.gnss) with
+// the engine's origin at the route's and imu_rate_hz the simulator's.
+ReplayResult run_sim_waist(const sim::SimOutput& out, const sim::Route& route, const std::string& config_json,
+                           const std::vector<std::string>& plugin_dirs);
+
+// One output against the truth at its time.
+struct OutputError {
+    double t_s = 0;
+    double err_h_m = 0;  // horizontal
+    double err_e_m = 0, err_n_m = 0;
+    int source = 0;      // PN_POSITION_SOURCE_*
+    double walked_m = 0; // true horizontal distance walked up to t
+};
+std::vector<OutputError> output_errors(const ReplayResult& r, const sim::SimOutput& out);
+
+// Steps by motion mode against the truth's vertical speed over the step:
+// climbing (above 0.15 m/s), descending, or level.
+struct StairsScore {
+    int up_steps = 0, up_labelled_up = 0;
+    int down_steps = 0, down_labelled_down = 0;
+    int level_steps = 0, level_labelled_stairs = 0;
+};
+StairsScore stairs_score(const ReplayResult& r, const sim::SimOutput& out);
+
+// The longest gap between fixes: [last fix before it, first fix after it], s.
+std::pair<double, double> longest_gnss_gap_s(const std::vector<pn_gnss_t>& fixes);
+
+// Inside (t0, t1]: the largest growth of the error vector since the last
+// output at or before t0, and the distance walked from there to t1.
+struct Drift {
+    double max_m = 0, walked_m = 0;
+};
+Drift drift_in(const std::vector<OutputError>& errors, double t0_s, double t1_s);
+
+// Mean horizontal error of the outputs of `source`, and how many there are.
+double mean_error_of(const std::vector<OutputError>& errors, int source, int* count);
+double mean_h_accuracy_m(const std::vector<pn_gnss_t>& fixes);
+
+// Two laps of a 100 m x 60 m block outdoors (640 m, 8 turns): the long walk
+// the 60 s GNSS outage is cut from (fixes of 300 to 360 s removed).
+sim::Route block_laps_route();
+constexpr double kBlockOutageStartS = 300.0, kBlockOutageEndS = 360.0;
+void remove_fixes(sim::SimOutput& out, double t0_s, double t1_s);
+
+// The waist preset (configs/waist.json) read from the source tree.
+std::string waist_preset(const std::string& source_dir);
+
+}  // namespace pednav::waist_eval
