@@ -62,6 +62,8 @@ pn_status_t pn_engine_set_start(pn_engine_t *engine, const double pos_enu_m[3], 
                                 pn_error_t *err);
 pn_status_t pn_engine_set_origin(pn_engine_t *engine, const pn_geo_point_t *origin, pn_error_t *err);
 pn_status_t pn_engine_get_origin(const pn_engine_t *engine, pn_geo_point_t *origin);
+pn_status_t pn_engine_geo_from_enu(const pn_engine_t *engine, const double pos_enu_m[3], pn_geo_point_t *out);
+pn_status_t pn_engine_enu_from_geo(const pn_engine_t *engine, const pn_geo_point_t *point, double pos_enu_m[3]);
 pn_status_t pn_engine_load_map(pn_engine_t *engine, const char *format, const void *bytes, size_t size,
                                pn_error_t *err);
 pn_status_t pn_engine_reconfigure(pn_engine_t *engine, const char *stage, const char *params_json,

@@ -114,6 +114,16 @@ class Engine:
             return None
         return point.lat_deg, point.lon_deg, point.height_m
 
+    def enu_from_geo(self, lat_deg, lon_deg, height_m=0.0):
+        """ENU metres of a WGS-84 point through the engine's origin (exact
+        ellipsoidal conversion), for a few points such as a map's vertices."""
+        point = ffi.new("pn_geo_point_t *", {"lat_deg": lat_deg, "lon_deg": lon_deg, "height_m": height_m})
+        out = ffi.new("double[3]")
+        status = lib().pn_engine_enu_from_geo(self._engine, point, out)
+        if status != 0:
+            raise ValueError("enu_from_geo: the engine has no origin yet")
+        return out[0], out[1], out[2]
+
     def load_map(self, map_data, format="pednav.map/1"):
         """A map for the map matcher: a path, GeoJSON text or bytes, or a dict."""
         if isinstance(map_data, dict):

@@ -95,3 +95,17 @@ def test_run_with_a_config_and_bad_inputs(tmp_path):
     assert len(result.warnings) == 1 and result.warnings[0].startswith("record 500: PN_E_NUMERIC")
     assert len(result.positions) == len(pednav.run(rec, mount="foot").positions) - 1
     assert records.POSITION.itemsize == result.positions["struct_size"][0]
+
+
+def test_the_plot_example(tmp_path, sim_walk):
+    import os
+    import subprocess
+    import sys
+    script = os.path.join(os.path.dirname(__file__), "..", "..", "..", "examples", "python", "plot_track.py")
+    done = subprocess.run([sys.executable, script, str(sim_walk), "--out", str(tmp_path / "t.png")],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    median = pednav.evaluate(pednav.run(sim_walk / "input.csv", mount="foot"),
+                             sim_walk / "truth.csv")["horizontal_error_m"]["median"]
+    assert "horizontal error median %.2f m" % median in done.stdout
+    assert (tmp_path / "t.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

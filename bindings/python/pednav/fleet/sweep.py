@@ -140,7 +140,9 @@ def write_sweep(ranked, best_config, objective, out_dir):
                                                                    e["failed"]])
     json_path = os.path.join(out_dir, "sweep.json")
     with open(json_path, "w", encoding="utf-8") as f:
-        json.dump({"objective": objective, "candidates": ranked}, f, indent=2, default=str)
+        finite = [{k: (None if isinstance(v, float) and not math.isfinite(v) else v) for k, v in e.items()}
+                  for e in ranked]  # a candidate with a failed walk: null scores (JSON has no infinity)
+        json.dump({"objective": objective, "candidates": finite}, f, indent=2)
         f.write("\n")
     files = [csv_path, json_path]
     if best_config is not None:
