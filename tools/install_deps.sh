@@ -4,7 +4,8 @@
 #   tools/install_deps.sh [--java] [extra packages...]
 # --java adds the JDK and JUnit 5 for the optional Java binding (bindings/java).
 set -euo pipefail
-packages=(build-essential cmake pkg-config libeigen3-dev nlohmann-json3-dev doctest-dev valgrind python3-jsonschema)
+packages=(build-essential cmake pkg-config libeigen3-dev nlohmann-json3-dev doctest-dev valgrind python3-jsonschema
+          python3-numpy python3-cffi python3-pytest python3-matplotlib python3-dask python3-distributed)
 extra=()
 for a in "$@"; do
   if [ "$a" = "--java" ]; then packages+=(default-jdk junit5); else extra+=("$a"); fi

@@ -15,6 +15,7 @@
  * those fails, the change breaks every plugin and app already built.
  */
 #include <pednav/pn_engine.h>
+#include <pednav/pn_io.h>
 #include <pednav/pn_plugin.h>
 #include <pednav/pn_types.h>
 
@@ -268,6 +269,13 @@ PN_SIZE(pn_output_t, PN_RECORD_MAX_SIZE);
 PN_OFF(pn_output_t, header, 0);
 PN_OFF(pn_output_t, position, 0);
 PN_OFF(pn_output_t, bytes, 0);
+
+/* --------------------------------------------------------- pn_io.h */
+PN_OFF(pn_truth_point_t, t_s, 0);
+PN_OFF(pn_truth_point_t, pos_enu_m, 8);
+PN_OFF(pn_truth_point_t, floor, 32);
+PN_OFF(pn_truth_point_t, has_z, 36);
+PN_SIZE(pn_truth_point_t, 40);
 
 int pn_layout_sentinels_probe(void);
 int pn_layout_sentinels_probe(void) { return 0; }

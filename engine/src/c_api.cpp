@@ -144,6 +144,22 @@ pn_status_t pn_engine_push(pn_engine_t* engine, const pn_record_header_t* record
     }
 }
 
+pn_status_t pn_engine_push_records(pn_engine_t* engine, const pn_record_header_t* const* records, size_t count,
+                                   pn_error_t* err) {
+    if (!engine || (count && !records)) {
+        set_error(err, PN_E_INVALID_ARGUMENT, "push_records", "engine or records is NULL");
+        return PN_E_INVALID_ARGUMENT;
+    }
+    for (size_t i = 0; i < count; ++i) {
+        const pn_status_t s = pn_engine_push(engine, records[i], err);
+        if (PN_FAILED(s)) {
+            if (err && err->struct_size >= sizeof(pn_error_t)) err->detail = static_cast<int32_t>(i);
+            return s;
+        }
+    }
+    return PN_OK;
+}
+
 #define PN_GUARDED(name, call)                                             \
     if (!engine) {                                                         \
         set_error(err, PN_E_INVALID_ARGUMENT, name, "engine is NULL");     \
@@ -216,6 +232,16 @@ pn_status_t pn_engine_enu_from_geo(const pn_engine_t* engine, const pn_geo_point
 pn_status_t pn_engine_poll(pn_engine_t* engine, pn_output_t* out) {
     if (!engine || !out) return PN_E_INVALID_ARGUMENT;
     return engine->engine.scheduler().outputs().pop(out) ? PN_OK : PN_NO_DATA;
+}
+
+pn_status_t pn_engine_poll_many(pn_engine_t* engine, pn_output_t* out, size_t capacity, size_t* count) {
+    if (count) *count = 0;
+    if (!engine || !count || (capacity && !out)) return PN_E_INVALID_ARGUMENT;
+    auto& queue = engine->engine.scheduler().outputs();
+    size_t n = 0;
+    while (n < capacity && queue.pop(&out[n])) ++n;
+    *count = n;
+    return PN_OK;
 }
 
 pn_status_t pn_engine_get_latest(pn_engine_t* engine, pn_record_type_t type, pn_output_t* out) {

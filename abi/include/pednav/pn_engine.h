@@ -126,6 +126,14 @@ PN_API pn_status_t pn_engine_push_imu(pn_engine_t *engine, const pn_imu_t *sampl
  * pn_engine_set_origin). */
 PN_API pn_status_t pn_engine_push(pn_engine_t *engine, const pn_record_header_t *record,
                                   pn_error_t *err);
+/* [producer] Push `count` records of any input type, in the order given
+ * (records[i] points at one record; what pn_engine_push does for each, in one
+ * call: bindings push whole recordings without a call per sample). Stops at
+ * the first record that fails with its status and err.detail = its index; the
+ * records before it are processed (a plugin failure means that record was
+ * accepted: continue from the next one, as after a rejected record). */
+PN_API pn_status_t pn_engine_push_records(pn_engine_t *engine, const pn_record_header_t *const *records,
+                                          size_t count, pn_error_t *err);
 /* [producer] End of stream: drains the look-ahead of every stage. Pushing
  * after flush continues a new segment. */
 PN_API pn_status_t pn_engine_flush(pn_engine_t *engine, pn_error_t *err);
@@ -202,6 +210,10 @@ PN_API pn_status_t pn_engine_reconfigure(pn_engine_t *engine, const char *stage,
 /* [consumer] Pops the oldest output record into *out: PN_OK, or PN_NO_DATA
  * when empty. */
 PN_API pn_status_t pn_engine_poll(pn_engine_t *engine, pn_output_t *out);
+/* [consumer] Pops up to `capacity` output records, oldest first, into
+ * out[0 .. *count): PN_OK (also when none: *count = 0). Each slot holds one
+ * record (header.type says which) of header.struct_size bytes. */
+PN_API pn_status_t pn_engine_poll_many(pn_engine_t *engine, pn_output_t *out, size_t capacity, size_t *count);
 /* [producer] Copies the newest output of the given type without popping
  * anything: PN_OK, or PN_NO_DATA if none yet. */
 PN_API pn_status_t pn_engine_get_latest(pn_engine_t *engine, pn_record_type_t type,
