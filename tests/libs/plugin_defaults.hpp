@@ -39,6 +39,7 @@ public:
 
     double number(const std::string& key) const { return at(key).get<double>(); }
     bool boolean(const std::string& key) const { return at(key).get<bool>(); }
+    long integer(const std::string& key) const { return at(key).get<long>(); }
 
 private:
     const nlohmann::json& at(const std::string& key) const {
