@@ -7,7 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include <pednav_geodesy/enu.hpp>
+#include <pednav_sim/building_map.hpp>
 #include <pednav_sim/simulate.hpp>
 
 namespace pednav::sim {
@@ -24,13 +24,6 @@ void make_dirs(const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw std::runtime_error("sim: cannot create " + dir + ": " + ec.message());
-}
-
-nlohmann::json lonlat(const geodesy::GeodeticPoint& o, double x, double y, double z) {
-    const double enu[3] = {x, y, z};
-    double lat = 0.0, lon = 0.0, h = 0.0;
-    geodesy::enu_to_geodetic(o, enu, &lat, &lon, &h);
-    return {lon, lat};
 }
 
 }  // namespace
@@ -101,23 +94,7 @@ void write_outputs(const SimOutput& out, const Route& route, const std::string& 
                      g.h_accuracy_m, g.v_accuracy_m, g.vel_enu_mps[0], g.vel_enu_mps[1], g.vel_enu_mps[2]);
     std::fclose(f);
 
-    // Building map: walls and the route as GeoJSON LineStrings (WGS-84 lon, lat).
-    const geodesy::GeodeticPoint o{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m};
-    nlohmann::json fc = {{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
-    for (const Wall& w : route.walls) {
-        nlohmann::json coords = nlohmann::json::array();
-        for (const auto& p : w.points_enu_m) coords.push_back(lonlat(o, p[0], p[1], 0.0));
-        fc["features"].push_back({{"type", "Feature"},
-                                  {"geometry", {{"type", "LineString"}, {"coordinates", coords}}},
-                                  {"properties", {{"kind", "wall"}, {"floor", w.floor}}}});
-    }
-    nlohmann::json path = nlohmann::json::array();
-    for (const Waypoint& w : route.waypoints) path.push_back(lonlat(o, w.enu_m[0], w.enu_m[1], 0.0));
-    fc["features"].push_back({{"type", "Feature"},
-                              {"geometry", {{"type", "LineString"}, {"coordinates", path}}},
-                              {"properties", {{"kind", "route"}, {"name", route.name}}}});
-    fc["pednav:origin"] = {{"lat_deg", o.lat_deg}, {"lon_deg", o.lon_deg}, {"height_m", o.height_m}};
-    std::ofstream(out_dir + "/building.geojson") << fc.dump(1) << '\n';
+    std::ofstream(out_dir + "/building.geojson") << building_map(route).dump(1) << '\n';
     std::ofstream(out_dir + "/route.json") << route_to_json(route).dump(2) << '\n';
 }
 

@@ -96,7 +96,7 @@ SimOutput simulate(const Route& route, const SimOptions& options);
 //   input.csv      canonical engine input, header t,ax,ay,az,gx,gy,gz[,mx,my,mz][,p]
 //   truth.csv      t,x,y,z,qw,qx,qy,qz,vx,vy,vz,stance,step,floor,heading_deg
 //   gnss.csv       t,lat_deg,lon_deg,height_m,h_accuracy_m,v_accuracy_m,ve,vn,vu
-//   building.geojson  the route's walls and path (WGS-84)
+//   building.geojson  the route's map, pednav.map/1 (building_map.hpp)
 //   route.json     the route document
 void write_outputs(const SimOutput& out, const Route& route, const std::string& out_dir);
 
