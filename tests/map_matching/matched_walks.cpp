@@ -9,10 +9,10 @@
 
 #include <pednav_eval/config_patch.hpp>
 #include <pednav_eval/metrics.hpp>
+#include <pednav_indoor_map/geojson_map.hpp>
 #include <pednav_indoor_map/geometry_2d.hpp>
+#include <pednav_sim/building_map.hpp>
 #include <pednav_sim/simulate.hpp>
-
-#include "sim_building.hpp"
 
 namespace pednav::test {
 
@@ -43,15 +43,21 @@ int count_crossings(const indoor_map::Map& m, const std::vector<pn_position_t>& 
 
 }  // namespace
 
-indoor_map::Map walk_map(const eval::SimulatedWalk& walk) { return sim_building_map(eval::sim_route(walk)); }
+std::string walk_map_document(const eval::SimulatedWalk& walk) { return sim::building_map(eval::sim_route(walk)).dump(); }
+
+indoor_map::Map walk_map(const eval::SimulatedWalk& walk) {
+    const std::string doc = walk_map_document(walk);
+    return indoor_map::read_geojson_map(doc, indoor_map::geojson_map_origin(doc));
+}
 
 MatchedWalkScore run_matched_walk(const MatchedWalk& w) {
     const sim::Route route = eval::sim_route(w.walk);
     const sim::SimOptions options = eval::sim_options(w.walk);
     const sim::SimOutput sim = sim::simulate(route, options);
-    const indoor_map::Map map = sim_building_map(route);
+    const std::string document = w.map_document.empty() ? walk_map_document(w.walk) : w.map_document;
+    const indoor_map::Map map = indoor_map::read_geojson_map(document, indoor_map::geojson_map_origin(document));
     const std::string map_path = w.work_dir + "/" + route.name + ".geojson";
-    std::ofstream(map_path) << map_to_geojson(map);
+    std::ofstream(map_path) << document;
 
     const std::string preset = read_text(w.config_path);
     const std::string mount = nlohmann::json::parse(preset).at("mount");

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // A simulated multi-floor walk through a pipeline with the map matcher and
-// the walk's building map, through the real engine and loader, scored
-// against the simulator's truth.
+// the walk's building map (the simulator's building.geojson), through the
+// real engine and loader, scored against the simulator's truth.
 #pragma once
 
 #include <string>
@@ -36,9 +36,11 @@ struct MatchedWalk {
     std::string config_path;            // the mount's preset
     std::string plugin_dir;
     std::string work_dir;               // where the map file is written
+    std::string map_document;           // the map; empty = the simulator's building.geojson of the route
 };
 
-// The walk's building map (sim_building_map of its route).
+// The walk's building.geojson (pednav::sim::building_map) and its model.
+std::string walk_map_document(const eval::SimulatedWalk& walk);
 indoor_map::Map walk_map(const eval::SimulatedWalk& walk);
 MatchedWalkScore run_matched_walk(const MatchedWalk& w);
 

@@ -4,6 +4,7 @@
 // IPIN score p75 < 1 m, no wall crossed by the output track, reproducible).
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstring>
 #include <cstdio>
 #include <cstdlib>
@@ -47,4 +48,51 @@ TEST_CASE("issue 13: simulated multi-floor walks with their map, behind the foot
             CHECK(s.crossings == 0);
             CHECK(s.recoveries == 0);
         }
+}
+
+TEST_CASE("the same seed gives the same track bit for bit, another seed another track as good") {
+    MatchedWalk w = foot_walk("stairs", 1);
+    const MatchedWalkScore a = run_matched_walk(w), b = run_matched_walk(w);
+    REQUIRE(a.track.size() == b.track.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < a.track.size(); ++i)
+        differing += std::memcmp(&a.track[i], &b.track[i], sizeof(pn_position_t)) != 0;
+    CHECK(differing == 0);
+    w.matcher_params = {{"seed", 99}};
+    const MatchedWalkScore c = run_matched_walk(w);
+    REQUIRE(c.track.size() == a.track.size());
+    differing = 0;
+    for (size_t i = 0; i < a.track.size(); ++i) differing += a.track[i].pos_enu_m[0] != c.track[i].pos_enu_m[0];
+    CHECK(differing > a.track.size() / 2);
+    CHECK(c.ipin_p75_m < 1.0);
+    CHECK(c.crossings == 0);
+}
+
+TEST_CASE("recovery: started 15 m off, inside the block the ring corridor goes round, the cloud dies and is reseeded") {
+    // The start point given to the engine is (30, 15) for a walk that starts
+    // at (0, 0): every step of the track leads into the block's walls.
+    MatchedWalk w = foot_walk("building_tour", 1);
+    w.start_offset_m[0] = 30.0;
+    w.start_offset_m[1] = 15.0;
+    const MatchedWalkScore s = run_matched_walk(w);
+    MESSAGE("started off: recoveries " << s.recoveries << ", recovered outputs " << s.recovered_flags
+                                       << ", horizontal p75 " << s.horizontal_p75_m << " m");
+    CHECK(s.recoveries >= 1);
+    CHECK(s.recovered_flags == s.recoveries);  // each recovery flags the position after it
+    CHECK(s.describe_json.find("every particle died") != std::string::npos);
+    // Never frozen: the output keeps moving over the whole walk.
+    double moved = 0;
+    for (size_t i = 1; i < s.track.size(); ++i)
+        moved += std::hypot(s.track[i].pos_enu_m[0] - s.track[i - 1].pos_enu_m[0],
+                            s.track[i].pos_enu_m[1] - s.track[i - 1].pos_enu_m[1]);
+    CHECK(moved > 400.0);  // of 614 m walked
+    // No survivors only from a recovery to the next step.
+    bool after_recovery = false;
+    for (size_t i = 0; i < s.track.size(); ++i) {
+        const pn_position_t& p = s.track[i];
+        REQUIRE(std::isfinite(p.pos_enu_m[0]));
+        if (p.header.flags & PN_POSITION_FLAG_RECOVERED) after_recovery = true;
+        else if (p.live_particles > 0) after_recovery = false;
+        if (p.live_particles == 0) REQUIRE(after_recovery);
+    }
 }

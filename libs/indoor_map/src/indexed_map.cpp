@@ -35,7 +35,7 @@ bool near_connector(const Connector& c, const Point2& p) {
 }
 
 Point2 connector_exit(const Connector& c, int to, const Point2& p) {
-    if (!c.is_arrow || c.area.empty()) return p;
+    if (!c.is_arrow || c.area.empty() || c.kind == ConnectorKind::stairs) return p;
     return to == c.floor_to ? c.area.back() : c.area.front();
 }
 

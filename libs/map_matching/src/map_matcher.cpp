@@ -133,7 +133,7 @@ void MapMatcher::on_stride(int64_t, double de, double dn) {
     live_ = r.survivors;
     if (r.recovered) {
         recovered_pending_ = true;
-        note(MatchEvent::recovery);
+        note(r.stalled ? MatchEvent::stall_recovery : MatchEvent::recovery);
     }
     cloud_ = filter_->estimate();
     const int k = filter_->nearest(cloud_.mean);
@@ -144,18 +144,34 @@ void MapMatcher::on_stride(int64_t, double de, double dn) {
     // A recovery restarts the output track where the new cloud is (the
     // position says so with PN_POSITION_FLAG_RECOVERED): the old one was lost.
     if (r.recovered) output_ = anchor_map_;
-    // Drift of the barometer reset in altitude-update zones, while level: the
-    // zone's height is an up like the positions' (the start's is start_[2]).
-    if (altimeter_.ready() && std::abs(altimeter_.vertical_rate_mps()) < c_.altitude_zone_max_rate_mps) {
-        const indoor_map::Zone* z =
-            map_->zones.zone_at(filter_->floor(), anchor_map_, indoor_map::ZoneKind::altitude);
-        const double h = floor_height_m();
-        if (z && std::isfinite(z->height_m) &&
-            std::abs(altimeter_.altitude_m() - filter_->floor() * h) < 0.5 * h - c_.baro.floor_hysteresis_m) {
-            altimeter_.set_altitude(z->height_m - start_[2], filter_->floor());
-            if (event_ == MatchEvent::none) note(MatchEvent::altitude_reset);
-        }
+    reset_drift();
+}
+
+bool MapMatcher::on_connector(const Point2& p) const {
+    const int f = filter_->floor();
+    for (const indoor_map::Connector& c : map_->map.connectors)
+        if ((c.floor == f || c.floor_to == f || c.kind == indoor_map::ConnectorKind::lift) && near_connector(c, p))
+            return true;
+    return false;
+}
+
+// Drift of the barometer reset in altitude-update zones while level: a
+// zone's height is an up like the positions' (the start's is start_[2]).
+void MapMatcher::reset_drift() {
+    if (!altimeter_.ready() || !(std::abs(altimeter_.vertical_rate_mps()) < c_.altitude_zone_max_rate_mps)) return;
+    const int f = filter_->floor();
+    const double h = floor_height_m();
+    if (!(std::abs(altimeter_.altitude_m() - f * h) < 0.5 * h - c_.baro.floor_hysteresis_m)) return;
+    double target = NAN;
+    if (const indoor_map::Zone* z = map_->zones.zone_at(f, anchor_map_, indoor_map::ZoneKind::altitude)) {
+        target = z->height_m - start_[2];
+    } else if (c_.floor_level_reset && !map_->zones.has_kind(f, indoor_map::ZoneKind::altitude) &&
+               !on_connector(anchor_map_)) {
+        target = f * h;
     }
+    if (!std::isfinite(target)) return;
+    altimeter_.set_altitude(target, f);
+    if (event_ == MatchEvent::none) note(MatchEvent::altitude_reset);
 }
 
 MatchedPosition MapMatcher::on_position(const TrackPosition& p) {

@@ -111,7 +111,7 @@ StepReport ParticleFilter::step(double de, double dn, const Point2& anchor) {
     Point2 expected;
     if (!report.recovered && stalled(expected)) {
         recover(expected);
-        report.recovered = true;
+        report.recovered = report.stalled = true;
         consecutive_recoveries_ = 0;
         history_size_ = 0;  // a fresh window for the new cloud
     }

@@ -74,6 +74,8 @@ public:
       "description": "where most particles are on stairs or a lift linking two floors, the floor goes up at half a floor and down this far below the half (elsewhere baro_floor_hysteresis_m either side)"},
     "altitude_zone_max_rate_mps": {"type": "number", "x-unit": "m/s", "minimum": 0, "maximum": 10, "default": 0.1,
       "description": "in an altitude-update zone the barometer's drift is reset while the vertical rate is below this; 0 = never"},
+    "floor_level_reset": {"type": "boolean", "default": true,
+      "description": "on a floor the map gives no altitude zone, level and off stairs and lifts, the barometer's drift is reset to the floor's height (floor index x floor height), as an altitude zone would; false = only altitude zones reset it"},
     "wall_clearance_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 1, "default": 0.05,
       "description": "an output move that a wall would cut stops this far short of the wall"},
     "baro_reference_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 5,
@@ -162,6 +164,11 @@ private:
                 log(PNP_LOG_WARN, "every particle died; cloud reseeded around the last estimate (recovery " +
                                       std::to_string(recoveries) + ")");
                 break;
+            case mm::MatchEvent::stall_recovery:
+                log(PNP_LOG_WARN, "the cloud stalled while the track went on (a wall without a door in the map?); "
+                                  "reseeded where the track puts the walker (recovery " +
+                                      std::to_string(recoveries) + ")");
+                break;
             case mm::MatchEvent::floor_recovery:
                 log(PNP_LOG_WARN, "floor change to " + std::to_string(floor) +
                                       " with no particle on stairs or a lift; cloud reseeded at the nearest (recovery " +
@@ -182,6 +189,7 @@ private:
         c.map_floor_margin_m = p.number("map_floor_margin_m");
         c.altitude_zone_max_rate_mps = p.number("altitude_zone_max_rate_mps");
         c.wall_clearance_m = p.number("wall_clearance_m");
+        c.floor_level_reset = p.boolean("floor_level_reset");
         if (c.filter.scale_min > c.filter.scale_max) throw ConfigError("scale_min", "scale_min must not exceed scale_max");
         if (c.filter.recovery_max_radius_m < c.filter.recovery_radius_m)
             throw ConfigError("recovery_max_radius_m", "recovery_max_radius_m must not be below recovery_radius_m");

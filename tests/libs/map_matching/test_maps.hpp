@@ -19,6 +19,7 @@ inline map_matching::MapMatcherConfig matcher_defaults() {
     c.map_floor_margin_m = d.number("map_floor_margin_m");
     c.altitude_zone_max_rate_mps = d.number("altitude_zone_max_rate_mps");
     c.wall_clearance_m = d.number("wall_clearance_m");
+    c.floor_level_reset = d.boolean("floor_level_reset");
     return c;
 }
 

@@ -20,9 +20,11 @@ bool connector_links(const Connector& c, int from, int to);
 // reach_m of its outline (an area) or of its line (an arrow).
 bool near_connector(const Connector& c, const Point2& p);
 
-// Where a walker taken by c to floor `to` comes out: an arrow's head (or its
-// foot, going the other way); for an area, nowhere in particular (the
-// footprint is the same on both floors) and `p` itself is returned.
+// Where a walker taken by c to floor `to` comes out: an escalator's or a
+// lift's arrow carries the walker without steps to its head (or its foot,
+// going the other way); on stairs the steps themselves carry the walker
+// along the flight, and an area has the same footprint on both floors: there
+// `p` itself is returned.
 Point2 connector_exit(const Connector& c, int to, const Point2& p);
 
 struct IndexedMap {

@@ -21,7 +21,10 @@
 //   map_floor_margin_m below it. A floor change moves the cloud through the
 //   connectors (ParticleFilter::change_floor).
 // - In an altitude-update zone the barometer's drift is reset to the zone's
-//   height (BarometricAltimeter::set_altitude) while the walker is level.
+//   height (BarometricAltimeter::set_altitude) while the walker is level. On
+//   a floor the map gives no altitude zone, with floor_level_reset, anywhere
+//   off stairs and lifts serves as one at the floor's height (floor index x
+//   floor height: the map says its floors are that far apart).
 // - Without a map the positions pass through, with the barometer's floor.
 #pragma once
 
@@ -43,6 +46,8 @@ struct MapMatcherConfig {
     double map_floor_margin_m;          // on a connector, the floor changes this far past half a floor, m
     double altitude_zone_max_rate_mps;  // altitude zones reset the drift only below this vertical rate
     double wall_clearance_m;            // an output stopped by a wall stands this far short of it, m
+    bool floor_level_reset;             // on a floor without altitude zones, level and off connectors, the
+                                        // altitude is the floor's (floor index x floor height)
 };
 
 // A position of the dead-reckoned track (the upstream filter's).
@@ -60,12 +65,12 @@ struct MatchedPosition {
     bool has_floor;
     int floor;
     bool map_matched;         // from the particle filter (false: passed through, no map)
-    uint32_t live_particles;  // survivors of the latest step (before regeneration)
+    uint32_t live_particles;  // survivors of the latest step (before regeneration; 0 after a recovery)
     bool recovered;           // the cloud was reseeded since the previous output
     uint32_t recoveries;      // since the start
 };
 
-enum class MatchEvent { none, recovery, floor_change, floor_recovery, altitude_reset };
+enum class MatchEvent { none, recovery, stall_recovery, floor_change, floor_recovery, altitude_reset };
 
 class MapMatcher {
 public:
@@ -94,6 +99,8 @@ public:
 private:
     void ensure_started(const TrackPosition* p);
     void update_floor();
+    void reset_drift();
+    bool on_connector(const indoor_map::Point2& p) const;
     void note(MatchEvent e);
     indoor_map::Point2 move_clear_of_walls(const indoor_map::Point2& from, const indoor_map::Point2& to) const;
 

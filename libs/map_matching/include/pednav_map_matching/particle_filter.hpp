@@ -56,7 +56,8 @@ struct CloudEstimate {
 // What a step did.
 struct StepReport {
     int survivors = 0;      // live after the wall and zone tests, before regeneration
-    bool recovered = false; // every particle died and the cloud was reseeded
+    bool recovered = false; // the cloud was reseeded: every particle died, or it stalled
+    bool stalled = false;   // it was reseeded because it stalled
 };
 
 class ParticleFilter {
