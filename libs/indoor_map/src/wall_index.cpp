@@ -81,8 +81,15 @@ const WallIndex::FloorGrid* WallIndex::grid_of(int floor) const {
 }
 
 bool WallIndex::crosses_in_cell(const FloorGrid& g, int cell, const Point2& p0, const Point2& p1) {
+    // Walls whose bounding box misses the query's cannot share a point with
+    // it: most are rejected by four comparisons before the exact test.
+    const double qe0 = std::min(p0.e_m, p1.e_m), qe1 = std::max(p0.e_m, p1.e_m);
+    const double qn0 = std::min(p0.n_m, p1.n_m), qn1 = std::max(p0.n_m, p1.n_m);
     for (uint32_t k = g.cell_begin[cell]; k < g.cell_begin[cell + 1]; ++k) {
         const Segment& s = g.segments[g.cell_walls[k]];
+        if (std::max(s.ae, s.be) < qe0 || std::min(s.ae, s.be) > qe1 || std::max(s.an, s.bn) < qn0 ||
+            std::min(s.an, s.bn) > qn1)
+            continue;
         if (segments_intersect(p0, p1, {s.ae, s.an}, {s.be, s.bn})) return true;
     }
     return false;
@@ -139,6 +146,24 @@ void WallIndex::walk_cells(const FloorGrid& g, const Point2& p0, const Point2& p
 bool WallIndex::crosses_wall(int floor, const Point2& p0, const Point2& p1) const {
     const FloorGrid* g = grid_of(floor);
     if (!g) return false;
+    // Both ends inside the grid in the same or neighbouring cells (most
+    // steps): the segment lies within the square of those at most 2 x 2
+    // cells; testing all of them finds the same walls as the traversal.
+    const double inv = 1.0 / cell_m_;
+    const double x0 = (p0.e_m - g->e0) * inv, y0 = (p0.n_m - g->n0) * inv;
+    const double x1 = (p1.e_m - g->e0) * inv, y1 = (p1.n_m - g->n0) * inv;
+    // Inside the grid the coordinates are >= 0, where truncation is floor.
+    const bool inside =
+        x0 >= 0 && x0 < g->cols && y0 >= 0 && y0 < g->rows && x1 >= 0 && x1 < g->cols && y1 >= 0 && y1 < g->rows;
+    const int ca = inside ? static_cast<int>(x0) : 0, ra = inside ? static_cast<int>(y0) : 0;
+    const int cb = inside ? static_cast<int>(x1) : 0, rb = inside ? static_cast<int>(y1) : 0;
+    if (inside && std::abs(cb - ca) <= 1 && std::abs(rb - ra) <= 1) {
+        if (crosses_in_cell(*g, ra * g->cols + ca, p0, p1)) return true;
+        if (cb == ca && rb == ra) return false;
+        if (crosses_in_cell(*g, rb * g->cols + cb, p0, p1)) return true;
+        if (cb == ca || rb == ra) return false;
+        return crosses_in_cell(*g, ra * g->cols + cb, p0, p1) || crosses_in_cell(*g, rb * g->cols + ca, p0, p1);
+    }
     bool hit = false;
     walk_cells(*g, p0, p1, [&](int cell, double) { return hit = crosses_in_cell(*g, cell, p0, p1); });
     return hit;

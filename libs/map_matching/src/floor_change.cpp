@@ -29,6 +29,7 @@ bool ParticleFilter::change_floor(int to, const Point2& anchor) {
     const int from = floor_;
     if (!map_ || !map_->has_link(from, to)) {
         floor_ = to;  // nothing in the map says where: every particle as it stands
+        update_estimate();
         return false;
     }
     int live = 0;
@@ -50,6 +51,7 @@ bool ParticleFilter::change_floor(int to, const Point2& anchor) {
     history_size_ = 0;
     if (live > 0) {
         regenerate(live);
+        update_estimate();
         return false;
     }
     // Nobody on a connector: the track was off; take the linking connector
@@ -78,6 +80,7 @@ bool ParticleFilter::change_floor(int to, const Point2& anchor) {
         }
     }
     recover(centre);
+    update_estimate();
     return true;
 }
 

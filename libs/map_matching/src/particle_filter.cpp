@@ -35,10 +35,35 @@ ParticleFilter::ParticleFilter(const ParticleFilterConfig& c, const indoor_map::
     means_.resize(history_.size());
 }
 
+namespace {
+double wrap_pi(double a) {
+    if (a > M_PI) a -= 2.0 * M_PI;
+    else if (a <= -M_PI) a += 2.0 * M_PI;
+    return std::abs(a) <= M_PI ? a : std::remainder(a, 2.0 * M_PI);
+}
+}  // namespace
+
 void ParticleFilter::set_heading(Particle& p, double h) const {
-    p.heading_rad = std::remainder(h, 2.0 * M_PI);
+    p.heading_rad = wrap_pi(h);
     p.cos_h = std::cos(p.heading_rad);
     p.sin_h = std::sin(p.heading_rad);
+}
+
+// Turns the heading offset by a small angle: the cosine and sine by the
+// angle-sum formulas with the series of cos dh and sin dh (error below 1e-9
+// for |dh| < 0.05 rad, then renormalised), sin and cos for larger turns.
+void ParticleFilter::turn(Particle& p, double dh) const {
+    if (std::abs(dh) > 0.05) {
+        set_heading(p, p.heading_rad + dh);
+        return;
+    }
+    const double d2 = dh * dh;
+    const double c = 1.0 - 0.5 * d2 + d2 * d2 / 24.0, s = dh * (1.0 - d2 / 6.0 + d2 * d2 / 120.0);
+    const double nc = p.cos_h * c - p.sin_h * s, ns = p.sin_h * c + p.cos_h * s;
+    const double norm = 1.0 / std::sqrt(nc * nc + ns * ns);
+    p.cos_h = nc * norm;
+    p.sin_h = ns * norm;
+    p.heading_rad = wrap_pi(p.heading_rad + dh);
 }
 
 bool ParticleFilter::blocked(const Point2& a, const Point2& b) const {
@@ -55,7 +80,8 @@ void ParticleFilter::start(const Point2& p, int floor, double heading_rad) {
     history_size_ = history_head_ = 0;
     recoveries_ = 0;
     consecutive_recoveries_ = 0;
-    last_heading_rad_ = heading_rad;
+    last_heading_rad_ = wrap_pi(heading_rad);
+    stalled_steps_ = 0;
     particles_.clear();
     const int n = c_.particles;
     for (int i = 0, tries = 0; i < n; ++tries) {
@@ -73,29 +99,37 @@ void ParticleFilter::start(const Point2& p, int floor, double heading_rad) {
         }
     }
     started_ = true;
+    update_estimate();
 }
 
 StepReport ParticleFilter::step(double de, double dn, const Point2& anchor) {
     StepReport report;
     if (!started_) start(anchor, floor_);
-    last_heading_rad_ = estimate().heading_rad;
+    last_heading_rad_ = estimate_.heading_rad;
     const int slot = history_head_;
     history_[slot] = {de, dn, floor_};
     history_head_ = (history_head_ + 1) % static_cast<int>(history_.size());
     if (history_size_ < static_cast<int>(history_.size())) ++history_size_;
-    // Eq. (4): P_i += R(D s_i, h_i), heading clockwise positive, plus noise;
-    // survivors are packed to the front.
+    // Eq. (4): P_i += R(D s_i, h_i), heading clockwise positive, plus noise
+    // (the heading offset's walk normal, the step length's and the
+    // position's uniform); survivors are packed to the front.
     int live = 0;
+    const bool zones = map_ && map_->zones.has_kind(floor_, indoor_map::ZoneKind::no_particles);
+    const double length_halfwidth = std::sqrt(3.0) * c_.step_length_sd;
+    const double position_halfwidth = std::sqrt(3.0) * c_.position_sd_m;
     for (size_t i = 0; i < particles_.size(); ++i) {
         Particle q = particles_[i];
-        if (c_.heading_walk_sd_rad > 0) set_heading(q, q.heading_rad + c_.heading_walk_sd_rad * rng_.normal());
-        const double k = q.scale * (1.0 + c_.step_length_sd * rng_.normal());
+        if (c_.heading_walk_sd_rad > 0) turn(q, c_.heading_walk_sd_rad * rng_.normal());
+        // Length and position noise uniform with the configured standard
+        // deviations (half-width sqrt(3) sd): their shape does not matter to
+        // the cloud, and uniforms cost a fraction of normals.
+        const double k = q.scale * (1.0 + length_halfwidth * (2.0 * rng_.uniform() - 1.0));
         const double se = k * (de * q.cos_h + dn * q.sin_h), sn = k * (dn * q.cos_h - de * q.sin_h);
         const Point2 from{q.e_m, q.n_m};
-        q.e_m += se + c_.position_sd_m * rng_.normal();
-        q.n_m += sn + c_.position_sd_m * rng_.normal();
+        q.e_m += se + position_halfwidth * (2.0 * rng_.uniform() - 1.0);
+        q.n_m += sn + position_halfwidth * (2.0 * rng_.uniform() - 1.0);
         const Point2 to{q.e_m, q.n_m};
-        if (blocked(from, to) || forbidden(to)) continue;
+        if (blocked(from, to) || (zones && forbidden(to))) continue;
         particles_[live++] = q;
     }
     report.survivors = live;
@@ -107,10 +141,17 @@ StepReport ParticleFilter::step(double de, double dn, const Point2& anchor) {
         consecutive_recoveries_ = 0;
         regenerate(live);
     }
-    means_[slot] = estimate().mean;
+    update_estimate();
+    means_[slot] = estimate_.mean;
+    // Stalled over a whole window after the window, so that a cloud that
+    // waits at a corridor's end for the track to turn (the walker was behind
+    // it) is not taken for lost.
     Point2 expected;
-    if (!report.recovered && stalled(expected)) {
+    stalled_steps_ = !report.recovered && stalled(expected) ? stalled_steps_ + 1 : 0;
+    if (stalled_steps_ >= static_cast<int>(history_.size())) {
+        stalled_steps_ = 0;
         recover(expected);
+        update_estimate();
         report.recovered = report.stalled = true;
         consecutive_recoveries_ = 0;
         history_size_ = 0;  // a fresh window for the new cloud
@@ -124,7 +165,7 @@ StepReport ParticleFilter::step(double de, double dn, const Point2& anchor) {
 bool ParticleFilter::stalled(Point2& expected) const {
     const int size = static_cast<int>(history_.size());
     if (c_.stall_progress <= 0 || size < 3 || history_size_ < size) return false;
-    const CloudEstimate e = estimate();
+    const CloudEstimate& e = estimate_;
     const double ch = std::cos(e.heading_rad), sh = std::sin(e.heading_rad);
     double te = 0, tn = 0;
     for (int k = 0; k < size - 1; ++k) {  // the steps after the oldest mean
@@ -143,10 +184,20 @@ bool ParticleFilter::stalled(Point2& expected) const {
     return true;
 }
 
-CloudEstimate ParticleFilter::estimate() const {
-    CloudEstimate e{};
+double ParticleFilter::survivors_heading(int survivors) const {
+    double ss = 0, sc = 0;
+    for (int i = 0; i < survivors; ++i) {
+        ss += particles_[static_cast<size_t>(i)].sin_h;
+        sc += particles_[static_cast<size_t>(i)].cos_h;
+    }
+    return std::atan2(ss, sc);  // eq. (3) corrected
+}
+
+void ParticleFilter::update_estimate() {
+    CloudEstimate& e = estimate_;
+    e = CloudEstimate{};
     const double n = static_cast<double>(particles_.size());
-    if (particles_.empty()) return e;
+    if (particles_.empty()) return;
     double se = 0, sn = 0, ss = 0, sc = 0, scale = 0;
     for (const Particle& p : particles_) {
         se += p.e_m;
@@ -168,7 +219,6 @@ CloudEstimate ParticleFilter::estimate() const {
     e.cov_m2[0] = ee / n;
     e.cov_m2[1] = en / n;
     e.cov_m2[2] = nn / n;
-    return e;
 }
 
 int ParticleFilter::nearest(const Point2& p) const {

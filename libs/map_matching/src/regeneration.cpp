@@ -51,9 +51,9 @@ Particle ParticleFilter::propose_around(const Particle& parent, double radius_m,
 void ParticleFilter::regenerate(int survivors) {
     const int n_max = c_.particles;
     if (survivors >= n_max) return;
-    const double heading_mean = estimate().heading_rad;
+    const double heading_mean = survivors_heading(survivors);
     const int missing = n_max - survivors;
-    const long outer_max = 4L * missing;
+    const long outer_max = missing;
     long outer = 0;
     while (static_cast<int>(particles_.size()) < n_max && outer++ < outer_max) {
         const Particle parent = particles_[rng_.index(static_cast<uint32_t>(survivors))];

@@ -24,7 +24,7 @@ public:
         "with ERRATA.md): particles with heading offset and step scale, wall and no-particle deaths, Algorithm 1 "
         "regeneration with the backtracking test, circular-mean heading, floors from the barometer through stairs "
         "and lifts, recovery when every particle dies; without a map, positions pass through with the barometer's floor";
-    static constexpr const char* const kFeatures[] = {"mount:chest", "mount:handheld", "mount:foot", "needs:position",
+    static constexpr const char* const kFeatures[] = {"mount:foot", "needs:position",
                                                       "uses:stride", nullptr};
     static constexpr uint64_t kConsumes =
         PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_BARO);
@@ -47,9 +47,9 @@ public:
     "heading_walk_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 0, "maximum": 1, "default": 0.01,
       "description": "random walk of each particle's heading offset, per step (follows heading drift)"},
     "step_length_sd": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.03,
-      "description": "relative noise on each particle's step length, per step"},
+      "description": "relative noise on each particle's step length, per step (standard deviation of a uniform)"},
     "position_sd_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.05,
-      "description": "position noise per step and axis"},
+      "description": "position noise per step and axis (standard deviation of a uniform)"},
     "regen_radius_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 100, "default": 1.0,
       "description": "Algorithm 1's Radius: new particles within it of a random survivor (the paper: 3 m)"},
     "regen_tries": {"type": "integer", "minimum": 1, "maximum": 1000, "default": 8,
@@ -67,7 +67,7 @@ public:
     "recovery_heading_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 0, "maximum": 4, "default": 0.3,
       "description": "spread of a reseeded cloud's heading offsets around the last circular mean"},
     "stall_progress": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.5,
-      "description": "the cloud is lost, and reseeded where the track puts the walker, when over the last backtrack_steps steps its mean went less than this share of the track's way (it stalls at a wall the map has no door in); 0 = never"},
+      "description": "the cloud is lost, and reseeded where the track puts the walker, when over the last backtrack_steps steps its mean went less than this share of the track's way, at each of backtrack_steps steps in a row (it stalls at a wall the map has no door in); 0 = never"},
     "wall_cell_m": {"type": "number", "x-unit": "m", "minimum": 0.1, "maximum": 100, "default": 2.0,
       "description": "cell side of the grids that index walls and zones per floor"},
     "map_floor_margin_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.2,
@@ -182,14 +182,7 @@ private:
         }
     }
     static mm::MapMatcherConfig read(Params& p) {
-        mm::MapMatcherConfig c;
-        c.filter = mm::particle_filter_config(p);
-        c.baro = pednav::barometry::barometric_altimeter_config(p, "baro_");
-        c.wall_cell_m = p.number("wall_cell_m");
-        c.map_floor_margin_m = p.number("map_floor_margin_m");
-        c.altitude_zone_max_rate_mps = p.number("altitude_zone_max_rate_mps");
-        c.wall_clearance_m = p.number("wall_clearance_m");
-        c.floor_level_reset = p.boolean("floor_level_reset");
+        const mm::MapMatcherConfig c = mm::map_matcher_config(p);
         if (c.filter.scale_min > c.filter.scale_max) throw ConfigError("scale_min", "scale_min must not exceed scale_max");
         if (c.filter.recovery_max_radius_m < c.filter.recovery_radius_m)
             throw ConfigError("recovery_max_radius_m", "recovery_max_radius_m must not be below recovery_radius_m");

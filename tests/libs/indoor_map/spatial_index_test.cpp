@@ -5,6 +5,8 @@
 // length, outside the grid, and walls longer than a cell.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <stdexcept>
 
@@ -130,4 +132,37 @@ TEST_CASE("zone index: the same answers as a loop over every zone") {
     CHECK(inside > 1000);
     CHECK(index.has_kind(0, ZoneKind::walkable));
     CHECK(!index.has_kind(5, ZoneKind::walkable));
+}
+
+TEST_CASE("wall index: the first wall a segment meets, as a loop over every wall finds it") {
+    std::mt19937_64 rng(17);
+    const std::vector<WallSegment> walls = random_walls(rng, 800, 60.0);
+    const WallIndex index(walls, 2.0);
+    std::uniform_real_distribution<double> pos(-5.0, 65.0), step(-8.0, 8.0);
+    int mismatches = 0, hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Point2 p0{pos(rng), pos(rng)}, p1{p0.e_m + step(rng), p0.n_m + step(rng)};
+        const int f = i % 3 - 1;
+        // The loop: the smallest parameter along [p0, p1] where a wall meets it.
+        double best = INFINITY;
+        for (const WallSegment& w : walls) {
+            if (w.floor != f || !segments_intersect(p0, p1, w.a, w.b)) continue;
+            const double rx = p1.e_m - p0.e_m, ry = p1.n_m - p0.n_m, sx = w.b.e_m - w.a.e_m, sy = w.b.n_m - w.a.n_m;
+            const double den = rx * sy - ry * sx;
+            if (den == 0.0) continue;  // collinear: random walls almost never are
+            best = std::min(best, std::clamp(((w.a.e_m - p0.e_m) * sy - (w.a.n_m - p0.n_m) * sx) / den, 0.0, 1.0));
+        }
+        double t = -1;
+        Point2 a{}, b{};
+        const bool hit = index.first_crossing(f, p0, p1, &t, &a, &b);
+        hits += hit;
+        if (hit != std::isfinite(best) || (hit && std::abs(t - best) > 1e-9)) ++mismatches;
+        if (hit) {
+            // The wall returned is one the segment meets at t.
+            const Point2 at{p0.e_m + t * (p1.e_m - p0.e_m), p0.n_m + t * (p1.n_m - p0.n_m)};
+            if (distance_to_segment(at, a, b) > 1e-6) ++mismatches;
+        }
+    }
+    CHECK(mismatches == 0);
+    CHECK(hits > 3000);
 }

@@ -12,15 +12,7 @@ namespace pednav::test {
 
 inline map_matching::MapMatcherConfig matcher_defaults() {
     PluginDefaults d("libpnp_map_particle_filter.so", "org.pednav.map.particle_filter");
-    map_matching::MapMatcherConfig c;
-    c.filter = map_matching::particle_filter_config(d);
-    c.baro = barometry::barometric_altimeter_config(d, "baro_");
-    c.wall_cell_m = d.number("wall_cell_m");
-    c.map_floor_margin_m = d.number("map_floor_margin_m");
-    c.altitude_zone_max_rate_mps = d.number("altitude_zone_max_rate_mps");
-    c.wall_clearance_m = d.number("wall_clearance_m");
-    c.floor_level_reset = d.boolean("floor_level_reset");
-    return c;
+    return map_matching::map_matcher_config(d);
 }
 
 inline void add_polyline(indoor_map::Map& m, int floor, std::vector<indoor_map::Point2> pts) {

@@ -50,6 +50,22 @@ struct MapMatcherConfig {
                                         // altitude is the floor's (floor index x floor height)
 };
 
+// Fills a config from a params view (any type with number(key),
+// integer(key) and boolean(key)): the particle filter's keys, the
+// altimeter's under "baro_", and the matcher's own.
+template <class Params>
+MapMatcherConfig map_matcher_config(Params& v) {
+    MapMatcherConfig c;
+    c.filter = particle_filter_config(v);
+    c.baro = barometry::barometric_altimeter_config(v, "baro_");
+    c.wall_cell_m = v.number("wall_cell_m");
+    c.map_floor_margin_m = v.number("map_floor_margin_m");
+    c.altitude_zone_max_rate_mps = v.number("altitude_zone_max_rate_mps");
+    c.wall_clearance_m = v.number("wall_clearance_m");
+    c.floor_level_reset = v.boolean("floor_level_reset");
+    return c;
+}
+
 // A position of the dead-reckoned track (the upstream filter's).
 struct TrackPosition {
     int64_t t_ns;

@@ -16,8 +16,10 @@
 // A cloud can also be lost without dying: walking into a wall the map has no
 // door in, survivors behind it refill the cloud step after step and it
 // stalls while the track goes on. When over the backtracking window the
-// cloud's mean advanced less than stall_progress of the track's way, the
-// cloud is reseeded where the track says the walker is (a recovery too).
+// cloud's mean advanced less than stall_progress of the track's way, and did
+// so for as many steps again (a cloud ahead of the walker waits at the end of
+// a corridor for the turn, for a few steps), the cloud is reseeded where the
+// track says the walker is (a recovery too).
 //
 // The estimate is the mean position (eq. 2) and the circular mean of the
 // heading offsets (eq. 3 corrected: atan2 of the mean sine and cosine).
@@ -87,7 +89,8 @@ public:
     // Share of the particles on a connector linking floor() to `to`.
     double share_on_link(int to) const;
 
-    CloudEstimate estimate() const;
+    // Of the cloud as it is after the latest start, step or floor change.
+    const CloudEstimate& estimate() const { return estimate_; }
     // Index of the live particle nearest to point p.
     int nearest(const Point2& p) const;
 
@@ -109,6 +112,9 @@ private:
     void recover(const Point2& anchor);
     bool stalled(Point2& expected) const;
     void set_heading(Particle& p, double h) const;
+    void turn(Particle& p, double dh) const;
+    void update_estimate();
+    double survivors_heading(int survivors) const;
 
     ParticleFilterConfig c_;
     const indoor_map::IndexedMap* map_;
@@ -122,6 +128,8 @@ private:
     uint32_t recoveries_ = 0;
     int consecutive_recoveries_ = 0;
     double last_heading_rad_ = 0.0;  // circular mean heading offset before the latest step
+    int stalled_steps_ = 0;          // consecutive steps the cloud has been stalled
+    CloudEstimate estimate_{};
 };
 
 }  // namespace pednav::map_matching

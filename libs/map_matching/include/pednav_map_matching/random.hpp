@@ -21,18 +21,23 @@ public:
     // Uniform integer in [0, n), n > 0 (Lemire's multiply-shift; the bias is
     // below 2^-40 for the particle counts used here).
     uint32_t index(uint32_t n) { return static_cast<uint32_t>((engine_() >> 32) * n >> 32); }
-    // Standard normal (Box-Muller, both values of a pair used).
+    // Standard normal (Marsaglia's polar method: no trigonometry, both values
+    // of a pair used).
     double normal() {
         if (has_spare_) {
             has_spare_ = false;
             return spare_;
         }
-        const double u1 = 1.0 - uniform();  // (0, 1]
-        const double u2 = uniform();
-        const double r = std::sqrt(-2.0 * std::log(u1));
-        spare_ = r * std::sin(2.0 * M_PI * u2);
+        double x, y, r2;
+        do {
+            x = 2.0 * uniform() - 1.0;
+            y = 2.0 * uniform() - 1.0;
+            r2 = x * x + y * y;
+        } while (r2 >= 1.0 || r2 == 0.0);
+        const double k = std::sqrt(-2.0 * std::log(r2) / r2);
+        spare_ = y * k;
         has_spare_ = true;
-        return r * std::cos(2.0 * M_PI * u2);
+        return x * k;
     }
     // A point uniform in the disc of radius r around the origin.
     void in_disc(double r, double& de, double& dn) {
