@@ -113,6 +113,7 @@ ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_rec
     collect(engine.get(), result);
     if (options.progress) options.progress(total, total, options.progress_user);
     result.describe_json = describe(engine.get());
+    result.has_origin = pn_engine_get_origin(engine.get(), &result.origin) == PN_OK;
     const auto d = nlohmann::json::parse(result.describe_json, nullptr, false);
     if (!d.is_discarded()) result.plugin_failures = d["counters"].value("plugin_failures", uint64_t{0});
     return result;

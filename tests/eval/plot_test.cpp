@@ -2,12 +2,18 @@
 // SVG output: well-formed XML, coordinates where they belong, no NaN.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <regex>
 #include <string>
 #include <vector>
 
 #include <pednav_eval/truth_readers.hpp>
+#include <pednav_indoor_map/geojson_map.hpp>
 #include <pednav_plot/eval_plot.hpp>
+#include <pednav_plot/floor_plot.hpp>
+#include <pednav_sim/building_map.hpp>
+#include <pednav_sim/simulate.hpp>
 #include <pednav_plot/walk_plot.hpp>
 
 using namespace pednav::plot;
@@ -107,4 +113,45 @@ TEST_CASE("walk figure from an evaluation: truth, walls, estimate and error pane
     CHECK(svg.find("horizontal error (mean 0.50 m") != std::string::npos);
     CHECK(svg.find("nan") == std::string::npos);
     CHECK(svg.find("inf") == std::string::npos);
+}
+
+TEST_CASE("floor plot: the simulator's three-storey walk, one panel per floor with its walls, stairs and start") {
+    const pednav::sim::Route route = pednav::sim::builtin_route("building_tour");
+    const std::string doc = pednav::sim::building_map(route).dump();
+    const pednav::indoor_map::Map map = pednav::indoor_map::read_geojson_map(doc, std::nullopt);
+    pednav::sim::SimOptions o;
+    o.mount = "chest";
+    o.rate_hz = 20;
+    const pednav::sim::SimOutput out = pednav::sim::simulate(route, o);
+    FloorSeries truth{{"truth", "#2ca02c", {}, 2.5}, {}};
+    for (const auto& s : out.truth) {
+        truth.series.points.push_back({s.pos_enu_m[0], s.pos_enu_m[1]});
+        truth.floors.push_back(s.floor);
+    }
+    const std::vector<MapPanel> panels = floor_panels(map, landmark_names(doc, map), {truth});
+    REQUIRE(panels.size() == 3);
+    size_t walls = 0;
+    for (int f = 0; f < 3; ++f) {
+        CAPTURE(f);
+        CHECK(panels[f].title == "floor " + std::to_string(f));
+        walls += panels[f].walls.size();
+        CHECK(panels[f].links.size() == (f == 1 ? 2u : 1u));  // each flight shows on the two floors it joins
+        REQUIRE(panels[f].series.size() == 1);
+        // The truth on this floor only: the rings are 60 m x 30 m, every panel reaches both ends.
+        double e1 = -INFINITY;
+        for (const auto& p : panels[f].series[0].points)
+            if (std::isfinite(p[0])) e1 = std::max(e1, p[0]);
+        CHECK(e1 == doctest::Approx(60.0).epsilon(0.01));
+    }
+    CHECK(walls == map.walls.size());
+    REQUIRE(panels[0].markers.size() == 1);
+    CHECK(panels[0].markers[0].label == "start");
+    CHECK(panels[1].markers.empty());
+    const std::string svg = render_map_panels("building tour", panels);
+    std::string why;
+    CHECK_MESSAGE(well_formed(svg, why), why);
+    CHECK(count(svg, ">floor ") == 3);
+    CHECK(count(svg, "#ff7f0e") == 4 * 3);  // four arrows, each a line and a two-stroke head
+    CHECK(svg.find(">start<") != std::string::npos);
+    CHECK(svg.find("nan") == std::string::npos);
 }

@@ -96,9 +96,10 @@ TEST_CASE("walk list: the simulated walks' settings reach the simulator") {
     SimulatedWalk unknown;
     unknown.route = "no_such_route";
     CHECK_THROWS_WITH_AS(sim_route(unknown), doctest::Contains("no_such_route"), std::runtime_error);
-    // The report's: every built-in route with the simulator's own defaults.
+    // The report's: five built-in routes with the simulator's own defaults.
     const std::vector<SimulatedWalk> builtin = builtin_sim_walks("chest", 3);
-    REQUIRE(builtin.size() == pednav::sim::builtin_route_names().size());
+    REQUIRE(builtin.size() == 5);
+    CHECK(builtin.back().route == "outdoor_indoor");
     const pednav::sim::SimOptions b = sim_options(builtin.front());
     CHECK(b.mount == "chest");
     CHECK(b.seed == 3);

@@ -88,3 +88,27 @@ TEST_CASE("building map: the stairs route has one flight, a single-floor route n
     CHECK(route_map(sim::builtin_route("corridor_loop")).connectors.empty());
     CHECK(route_map(sim::builtin_route("corridor_loop")).floors == std::vector<int>{0});
 }
+
+TEST_CASE("building map: altitude zones along the level stretches of a multi-floor route, at their floor's height") {
+    const sim::Route r = sim::builtin_route("building_tour");
+    const indoor_map::Map m = route_map(r);
+    // Each floor's ring (four sides) and the stretch from the start to the turn into the stairwell,
+    // on floors 1 and 2 the last side split at that turn and the two stretches in the stairwell,
+    // each once however often it is walked.
+    std::vector<int> per_floor(3, 0);
+    for (const auto& z : m.zones) {
+        REQUIRE(z.kind == indoor_map::ZoneKind::altitude);
+        ++per_floor[static_cast<size_t>(z.floor)];
+        CHECK(z.height_m == doctest::Approx(z.floor * r.floor_height_m).epsilon(1e-3));
+        REQUIRE(z.rings.size() == 1);
+        CHECK(z.rings[0].size() == 4);
+    }
+    CHECK(per_floor == std::vector<int>{5, 7, 7});
+    // Near a corner of the ring: inside the zones of both sides.
+    const indoor_map::Point2 corner{59.5, 29.5};
+    int holding = 0;
+    for (const auto& z : m.zones) holding += z.floor == 1 && indoor_map::point_in_polygon(corner, z.rings);
+    CHECK(holding == 2);
+    CHECK(route_map(sim::builtin_route("corridor_loop")).zones.empty());
+    CHECK(route_map(sim::builtin_route("stairs")).zones.size() == 3);
+}

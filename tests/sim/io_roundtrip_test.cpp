@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include <pednav_io/gnss_log.hpp>
 #include <pednav_io/sensor_log.hpp>
 #include <pednav_sim/simulate.hpp>
 
@@ -47,4 +48,40 @@ TEST_CASE("input.csv: the canonical reader gets the simulated records back, mult
     CHECK(worst_m < 1e-5);
     CHECK(worst_p < 1e-4);
     CHECK(log.issues.empty());
+}
+
+TEST_CASE("gnss.csv: the GNSS CSV reader gets the simulated fixes back") {
+    const Route route = builtin_route("outdoor_indoor");
+    const SimOutput out = simulate(route, SimOptions{});
+    const std::string dir = (std::filesystem::temp_directory_path() /
+                             ("pednav_sim_test_gnss_" + std::to_string(::getpid())))
+                                .string();
+    write_outputs(out, route, dir);
+    const pednav::io::SensorLog log = pednav::io::read_gnss_file(dir + "/gnss.csv");
+    CHECK(log.format == "csv");
+    CHECK(log.issues.size() == 1);  // the gap indoors
+    REQUIRE(log.gnss.size() == out.gnss.size());
+    REQUIRE(out.gnss.size() == 118);
+    double worst_deg = 0, worst_h = 0, worst_acc = 0, worst_vel = 0;
+    for (size_t k = 0; k < out.gnss.size(); ++k) {
+        const pn_gnss_t& a = log.gnss[k];
+        const pn_gnss_t& b = out.gnss[k];
+        CHECK(a.header.t_ns == b.header.t_ns);
+        CHECK(a.satellites == b.satellites);
+        CHECK(a.fix_type == b.fix_type);
+        CHECK(a.header.flags == b.header.flags);
+        worst_deg = std::max({worst_deg, std::fabs(a.lat_deg - b.lat_deg), std::fabs(a.lon_deg - b.lon_deg)});
+        worst_h = std::max(worst_h, std::fabs(a.height_m - b.height_m));
+        worst_acc = std::max({worst_acc, std::fabs(a.h_accuracy_m - b.h_accuracy_m),
+                              std::fabs(a.v_accuracy_m - b.v_accuracy_m)});
+        // Speed and course keep the horizontal velocity; the format has no vertical one.
+        worst_vel = std::max({worst_vel, std::fabs(a.vel_enu_mps[0] - b.vel_enu_mps[0]),
+                              std::fabs(a.vel_enu_mps[1] - b.vel_enu_mps[1])});
+        CHECK(a.vel_enu_mps[2] == 0.0);
+    }
+    CHECK(worst_deg < 1e-9);
+    CHECK(worst_h < 1e-3);
+    CHECK(worst_acc < 1e-3);
+    CHECK(worst_vel < 3e-3);
+    std::filesystem::remove_all(dir);
 }

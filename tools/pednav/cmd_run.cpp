@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include <nlohmann/json.hpp>
+#include <pednav_io/gnss_log.hpp>
 #include <pednav_io/origin.hpp>
 #include <pednav_io/sensor_log.hpp>
 #include <pednav_io/writers.hpp>
@@ -19,16 +20,37 @@ namespace {
 constexpr const char* kUsage =
     "usage: pednav run --mount foot|chest|waist --input FILE [--config FILE] [--format NAME]\n"
     "                  [--output track.csv] [--steps FILE] [--start x,y,z] [--heading DEG]\n"
-    "                  [--geojson FILE] [--gpx FILE] [--summary FILE] [--plot FILE.svg]\n"
+    "                  [--geojson FILE [--geojson-points]] [--gpx FILE] [--geo-csv FILE]\n"
+    "                  [--summary FILE] [--plot FILE.svg]\n"
     "                  [--column-map FILE.json] [--origin lat,lon,height] [--map FILE.geojson]\n"
-    "                  [--plugin-dir DIR]\n"
+    "                  [--plugin-dir DIR] [--gnss FILE [--gnss-format auto|nmea|csv] [--gnss-t0 S]\n"
+    "                  [--gnss-utc0 UTC] [--gnss-uere M]]\n"
     "  --config  a pednav-config/1 file instead of the mount's preset (configs/<mount>.json)\n"
     "  --format  the input format (default auto: detected); --column-map for any other CSV\n"
+    "  --gnss    GNSS fixes (NMEA 0183 or a t,lat,lon,... CSV) merged with the input in time order,\n"
+    "            in place of the input's own; NMEA times go on the input's clock by --gnss-utc0 (the\n"
+    "            UTC of t = 0: Unix seconds or 2024-05-01T10:00:00Z) or --gnss-t0 (the t of the\n"
+    "            file's first epoch; default the input's first sample: the logs started together)\n"
+    "  --gnss-uere  range error (m, 1 sigma) scaling HDOP/VDOP when the NMEA has no GST (default 5)\n"
     "  --start, --heading  the start point (m) and heading (deg clockwise from north), when known\n"
     "  --origin  the geodetic origin (WGS-84 of ENU 0,0,0, the start point by default): given to the\n"
-    "            engine and used by --geojson and --gpx\n"
-    "  --map     a map (GeoJSON, docs/maps.md) for the pipeline's map matcher\n"
+    "            engine and used by --geojson, --gpx and --geo-csv (default: the engine's own, e.g.\n"
+    "            from the first good GNSS fix)\n"
+    "  --geo-csv the track in latitude/longitude: t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m\n"
+    "  --geojson-points  a Point per position (0.1 s apart) with its source, floor, heading and sigma\n"
+    "  --map     a map (GeoJSON, docs/maps.md) for the pipeline's map matcher; --plot then draws the\n"
+    "            track over it, one panel per floor\n"
     "exit status: 0 done, 1 an error (or plugin failures: outputs still written), 2 a usage mistake\n";
+
+// A reader's notes and its first issues on stderr, each line prefixed by `what`.
+void print_read_messages(const char* what, const pednav::io::SensorLog& log) {
+    for (const auto& n : log.notes) std::fprintf(stderr, "%s: %s\n", what, n.c_str());
+    size_t shown = 0;
+    for (const auto& i : log.issues)
+        if (shown++ < 20) std::fprintf(stderr, "%s: line %zu: %s\n", what, i.line, i.message.c_str());
+    const size_t issue_count = log.issues.size() + log.issues_not_listed;
+    if (issue_count > 20) std::fprintf(stderr, "%s: ... %zu issues in all\n", what, issue_count);
+}
 
 }  // namespace
 
@@ -37,8 +59,11 @@ const char* const pednav_cmd_run_usage = kUsage;
 int pednav_cmd_run(const std::vector<std::string>& argv) {
     using namespace pednav;
     cli::Args args(argv, kUsage);
-    std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, summary, plot, column_map_path,
-        map_path;
+    std::string mount, config_path, input, format = "auto", output, steps, geojson, gpx, geo_csv, summary, plot,
+        column_map_path,
+        map_path, gnss_path;
+    io::GnssReadOptions gnss_options;
+    bool gnss_t0_given = false, geojson_points = false;
     io::Origin origin;
     ReplayOptions options;
     options.plugin_dirs = {cli::default_plugin_dir()};
@@ -52,10 +77,27 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         else if (a == "--steps") steps = args.value(a);
         else if (a == "--geojson") geojson = args.value(a);
         else if (a == "--gpx") gpx = args.value(a);
+        else if (a == "--geo-csv") geo_csv = args.value(a);
+        else if (a == "--geojson-points") geojson_points = true;
         else if (a == "--summary") summary = args.value(a);
         else if (a == "--plot") plot = args.value(a);
         else if (a == "--column-map") column_map_path = args.value(a);
         else if (a == "--map") map_path = args.value(a);
+        else if (a == "--gnss") gnss_path = args.value(a);
+        else if (a == "--gnss-format") gnss_options.format = args.value(a);
+        else if (a == "--gnss-t0") {
+            gnss_options.time.first_epoch_t_s = cli::parse_numbers(args.value(a), 1, a)[0];
+            gnss_t0_given = true;
+        } else if (a == "--gnss-utc0") {
+            const std::string v = args.value(a);
+            if (!io::parse_utc(v, &gnss_options.time.utc_ns_at_zero))
+                throw cli::UsageError("--gnss-utc0 takes Unix seconds or an ISO 8601 UTC time such as "
+                                      "2024-05-01T10:00:00Z, not " + v);
+        } else if (a == "--gnss-uere") {
+            gnss_options.uere_m = cli::parse_numbers(args.value(a), 1, a)[0];
+            if (!(gnss_options.uere_m > 0.0 && gnss_options.uere_m < 1000.0))
+                throw cli::UsageError("--gnss-uere must be within 0 .. 1000 m");
+        }
         else if (a == "--origin") {
             const auto v = cli::parse_numbers(args.value(a), 3, a);
             if (std::fabs(v[0]) > 90 || std::fabs(v[1]) > 180)
@@ -76,6 +118,11 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         }
     }
     if (input.empty()) throw cli::UsageError("run needs --input FILE");
+    if (geojson_points && geojson.empty()) throw cli::UsageError("--geojson-points goes with --geojson FILE");
+    if (gnss_path.empty() && (gnss_options.format != "auto" || gnss_t0_given || gnss_options.time.utc_ns_at_zero))
+        throw cli::UsageError("--gnss-format, --gnss-t0 and --gnss-utc0 go with --gnss FILE");
+    if (gnss_options.format != "auto" && gnss_options.format != "nmea" && gnss_options.format != "csv")
+        throw cli::UsageError("--gnss-format must be auto, nmea or csv, not " + gnss_options.format);
     if (mount.empty() && config_path.empty())
         throw cli::UsageError("run needs --mount foot|chest|handheld|waist or --config FILE");
     if (!mount.empty() && mount != "foot" && mount != "chest" && mount != "handheld" && mount != "waist")
@@ -115,14 +162,17 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         ro.column_map = &column_map;
         if (format == "auto") ro.format = "column-map";
     }
-    const io::SensorLog log = io::read_sensor_file(input, ro);
-    if (!origin.known && log.truth_origin.known) origin = log.truth_origin;
-    for (const auto& n : log.notes) std::fprintf(stderr, "input: %s\n", n.c_str());
-    size_t shown = 0;
-    for (const auto& i : log.issues)
-        if (shown++ < 20) std::fprintf(stderr, "input: line %zu: %s\n", i.line, i.message.c_str());
-    const size_t issue_count = log.issues.size() + log.issues_not_listed;
-    if (issue_count > 20) std::fprintf(stderr, "input: ... %zu issues in all\n", issue_count);
+    io::SensorLog log = io::read_sensor_file(input, ro);
+    print_read_messages("input", log);
+    io::SensorLog gnss_log;
+    if (!gnss_path.empty()) {
+        if (!gnss_t0_given && !log.imu.empty())
+            gnss_options.time.first_epoch_t_s = static_cast<double>(log.imu.front().header.t_ns) * 1e-9;
+        gnss_log = io::read_gnss_file(gnss_path, gnss_options);
+        print_read_messages("gnss", gnss_log);
+        io::use_gnss(log, gnss_log);
+        std::fprintf(stderr, "input: %s\n", log.notes.back().c_str());
+    }
 
     const ReplayResult r = cli::run_with_progress(options, io::merged_records(log));
     for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -130,16 +180,38 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "pednav run: %s\n", r.error.c_str());
         return 1;
     }
+    // Latitude and longitude: the --origin given, else the engine's own (the
+    // config's, a map's or its first good GNSS fix), else the truth points' frame.
+    if (!origin.known && r.has_origin) {
+        origin.lat_deg = r.origin.lat_deg;
+        origin.lon_deg = r.origin.lon_deg;
+        origin.height_m = r.origin.height_m;
+        origin.known = true;
+    }
+    if (!origin.known && log.truth_origin.known) origin = log.truth_origin;
+    if (origin.utc_ns_at_zero == 0) origin.utc_ns_at_zero = log.utc_ns_at_zero;
     if (!output.empty()) io::write_track_csv(output, r.positions);
     if (!steps.empty()) io::write_steps_csv(steps, r.strides);
-    if (!geojson.empty()) io::write_geojson(geojson, r.positions, r.strides, origin);
+    if (!geojson.empty()) {
+        io::GeoJsonExtras extras;
+        extras.position_points = geojson_points;
+        if (!log.gnss.empty()) extras.gnss_fixes = &log.gnss;
+        io::write_geojson(geojson, r.positions, r.strides, origin, extras);
+    }
     if (!gpx.empty()) io::write_gpx(gpx, r.positions, origin);
+    if (!geo_csv.empty()) io::write_geo_track_csv(geo_csv, r.positions, origin);
     if (!summary.empty()) {
         std::ofstream out(summary);
-        out << io::run_summary_json(log, r.describe_json, r.positions, r.strides, r.warnings).dump(2) << "\n";
+        nlohmann::json j = io::run_summary_json(log, r.describe_json, r.positions, r.strides, r.warnings);
+        if (!gnss_path.empty()) j["gnss_input"] = io::sensor_log_json(gnss_log);
+        out << j.dump(2) << "\n";
         if (!out) throw std::runtime_error("cannot write " + summary);
     }
-    if (!plot.empty()) cli::write_run_plot(plot, input, r);
+    if (!plot.empty()) {
+        std::optional<geodesy::GeodeticPoint> map_origin;
+        if (origin.known) map_origin = geodesy::GeodeticPoint{origin.lat_deg, origin.lon_deg, origin.height_m};
+        cli::write_run_plot(plot, input, r, map_path, map_origin);
+    }
     if (r.plugin_failures > 0) {
         // The outputs are written, but the run did not do its job cleanly.
         std::fprintf(stderr, "pednav run: %llu plugin failure%s (see the warnings above); outputs written\n",

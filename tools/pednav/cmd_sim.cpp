@@ -18,12 +18,14 @@ constexpr const char* kUsage =
     "usage: pednav sim --route FILE|NAME --out DIR [--mount foot|chest|waist] [--rate HZ] [--seed N]\n"
     "                  [--no-errors] [--mounting ROLL,PITCH,YAW] [--no-mag] [--no-baro] [--no-gnss]\n"
     "                  [--mag-rate HZ] [--baro-rate HZ] [--heel-strike-g G]\n"
+    "                  [--gnss-jump T,DURATION,EAST,NORTH]...\n"
     "       pednav sim --list\n"
     "  --route     a route JSON file (pednav-route/1) or a built-in route name\n"
     "  --mounting  sensor axes in the foot/body frame, degrees (default 0,0,0)\n"
     "  --no-errors exact sensors: no noise, bias, scale factor, saturation or drift\n"
     "  --mag-rate, --baro-rate  on a subset of the IMU samples (default: every sample)\n"
-    "  --heel-strike-g  foot: landing transient of this peak acceleration on level floors (default 0)\n";
+    "  --heel-strike-g  foot: landing transient of this peak acceleration on level floors (default 0)\n"
+    "  --gnss-jump  multipath: from T s for DURATION s every fix is EAST, NORTH metres off (repeatable)\n";
 
 }  // namespace
 
@@ -61,7 +63,16 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
             options.baro_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
         else if (a == "--heel-strike-g")
             options.heel_strike_g = pednav::cli::parse_numbers(value(), 1, a)[0];
-        else if (a == "--mounting") {
+        else if (a == "--gnss-jump") {
+            const std::vector<double> v = pednav::cli::parse_numbers(value(), 4, a);
+            if (v[0] < 0 || v[1] <= 0) throw pednav::cli::UsageError("--gnss-jump needs T >= 0 and DURATION > 0");
+            GnssJump jump;
+            jump.t_s = v[0];
+            jump.duration_s = v[1];
+            jump.offset_enu_m[0] = v[2];
+            jump.offset_enu_m[1] = v[3];
+            options.gnss_jumps.push_back(jump);
+        } else if (a == "--mounting") {
             const std::vector<double> rpy = pednav::cli::parse_numbers(value(), 3, a);
             std::copy(rpy.begin(), rpy.end(), options.mounting_rpy_deg);
         } else if (a == "--list") {

@@ -4,6 +4,7 @@
 #include "cmd_demo.hpp"
 #include "cmd_eval.hpp"
 #include "cmd_inspect.hpp"
+#include "cmd_map.hpp"
 #include "cmd_plugins.hpp"
 #include "cmd_report.hpp"
 #include "cmd_run.hpp"
@@ -18,6 +19,7 @@ const std::vector<PednavSubcommand>& pednav_subcommands() {
         {"inspect", &pednav_cmd_inspect, pednav_cmd_inspect_usage, "what the engine sees in a recording"},
         {"sim", &pednav_cmd_sim, pednav_cmd_sim_usage, "simulate a walk: engine input, truth, GNSS, map"},
         {"eval", &pednav_cmd_eval, pednav_cmd_eval_usage, "score a track against a ground truth"},
+        {"map", &pednav_cmd_map, pednav_cmd_map_usage, "check a map, convert floor plans to one"},
         {"report", &pednav_cmd_report, pednav_cmd_report_usage,
          "accuracy of every recording and simulated walk"},
     };

@@ -38,6 +38,8 @@ struct ReplayResult {
     uint64_t plugin_failures = 0;          // plugin calls that failed (each also in warnings)
     int64_t latency_ns = 0;                // pipeline output latency
     std::string describe_json;             // pn_engine_describe() at the end
+    bool has_origin = false;               // the engine had a geodetic origin at the end (pn_engine_get_origin)
+    pn_geo_point_t origin{0.0, 0.0, 0.0};  // WGS-84 of ENU (0, 0, 0): config, app, map or first good GNSS fix
 };
 
 // `records` must be in non-decreasing time order (io::merged_records gives that).

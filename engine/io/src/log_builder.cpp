@@ -66,11 +66,11 @@ void LogBuilder::issue(size_t line, const std::string& message) {
     }
 }
 
-void LogBuilder::bad_row(size_t line, const std::string& message, unsigned streams) {
+void LogBuilder::bad_row(size_t line, const std::string& message, unsigned streams, const char* unit) {
     for (int s = 0; s < stream_count; ++s) {
         if (streams & (1u << s)) ++bad_[s];
     }
-    issue(line, "row skipped: " + message);
+    issue(line, std::string(unit) + " skipped: " + message);
 }
 
 bool LogBuilder::accept_time(Clock& clock, size_t line, double t_s, unsigned streams) {
@@ -274,7 +274,7 @@ void LogBuilder::check_units() {
 void LogBuilder::finish() {
     context_.clear();
     pair_accel_gyro();
-    if (log_.imu.empty()) {
+    if (log_.imu.empty() && imu_required_) {
         std::string reason = "no accelerometer and gyroscope sample could be read";
         if (!log_.issues.empty()) {
             reason += " (first problem: line " + std::to_string(log_.issues.front().line) + ": " +

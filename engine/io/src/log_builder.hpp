@@ -46,8 +46,9 @@ public:
     // Prefix for issue messages while reading one file of a multi-file recording.
     void set_context(const std::string& context) { context_ = context; }
     void issue(size_t line, const std::string& message);
-    // The row (or sample) is skipped; counted as a bad row of every stream in `streams`.
-    void bad_row(size_t line, const std::string& message, unsigned streams);
+    // The row (or sample) is skipped; counted as a bad row of every stream in
+    // `streams`. The issue reads "<unit> skipped: <message>".
+    void bad_row(size_t line, const std::string& message, unsigned streams, const char* unit = "row");
     // True when a row/sample at t_s is to be kept: going backwards is a bad row,
     // a repeated time is dropped and counted (one summary issue at finish).
     bool accept_time(Clock& clock, size_t line, double t_s, unsigned streams);
@@ -65,7 +66,11 @@ public:
     void set_units(StreamId stream, const std::string& found, const std::string& converted);
     bool has_units(StreamId stream) const { return !units_found_[stream].empty(); }
 
-    // Completes the log; throws ReadError when no IMU sample could be read.
+    // A GNSS-only file (pednav_io/gnss_log.hpp) has no IMU samples to require.
+    void set_imu_required(bool required) { imu_required_ = required; }
+
+    // Completes the log; throws ReadError when no IMU sample could be read
+    // (unless set_imu_required(false)).
     void finish();
 
 private:
@@ -88,6 +93,7 @@ private:
     std::string units_converted_[stream_count];
     std::vector<Raw3> accel_raw_, gyro_raw_;
     bool separate_imu_ = false;
+    bool imu_required_ = true;
     struct DuplicateCount {
         size_t count = 0;
         size_t first_line = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "pednav_io/gnss_log.hpp"
 #include "pednav_io/writers.hpp"
 
 namespace pednav::io {
@@ -30,20 +31,23 @@ nlohmann::json sensor_log_json(const SensorLog& log) {
     if (log.truth_origin.known) {
         truth_origin = {{"lat_deg", log.truth_origin.lat_deg}, {"lon_deg", log.truth_origin.lon_deg}};
     }
-    return {{"path", log.path},
-            {"format", log.format},
-            {"axes", log.axes},
-            {"records",
-             {{"imu", log.imu.size()},
-              {"mag", log.mag.size()},
-              {"baro", log.baro.size()},
-              {"gnss", log.gnss.size()},
-              {"truth", log.truth.size()}}},
-            {"streams", streams},
-            {"truth_origin", truth_origin},
-            {"issues", issues},
-            {"issues_not_listed", log.issues_not_listed},
-            {"notes", log.notes}};
+    json j = {{"path", log.path},
+              {"format", log.format},
+              {"axes", log.axes},
+              {"records",
+               {{"imu", log.imu.size()},
+                {"mag", log.mag.size()},
+                {"baro", log.baro.size()},
+                {"gnss", log.gnss.size()},
+                {"truth", log.truth.size()}}},
+              {"streams", streams},
+              {"truth_origin", truth_origin},
+              {"issues", issues},
+              {"issues_not_listed", log.issues_not_listed},
+              {"notes", log.notes}};
+    if (!log.gnss.empty()) j["gnss_fixes"] = gnss_fixes_json(log.gnss);
+    if (log.utc_ns_at_zero != 0) j["utc_at_zero"] = iso_utc(log.utc_ns_at_zero);
+    return j;
 }
 
 double track_length_m(const std::vector<pn_position_t>& positions) {

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // Track and step CSVs, GeoJSON and GPX.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <stdexcept>
 
+#include "pednav_io/gnss_log.hpp"
 #include "pednav_io/writers.hpp"
 
 namespace pednav::io {
@@ -56,6 +58,16 @@ const char* class_name(int32_t c) {
 
 bool has_floor(const pn_position_t& p) { return (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) != 0; }
 
+nlohmann::json floor_of(const pn_position_t& p) { return has_floor(p) ? nlohmann::json(p.floor) : nlohmann::json(); }
+
+double h_sigma_m(const pn_position_t& p) { return std::sqrt(std::max(0.0, p.cov_enu_m2[0] + p.cov_enu_m2[4])); }
+
+nlohmann::json point_feature(const nlohmann::json& coordinates, nlohmann::json properties) {
+    return {{"type", "Feature"},
+            {"geometry", {{"type", "Point"}, {"coordinates", coordinates}}},
+            {"properties", std::move(properties)}};
+}
+
 std::vector<size_t> thinned(const std::vector<pn_position_t>& positions) {
     std::vector<size_t> keep;
     for (size_t i = 0; i < positions.size(); ++i) {
@@ -89,17 +101,6 @@ nlohmann::json coordinates(const double enu[3], const Origin& origin) {
     return {lon, lat, h};
 }
 
-std::string iso_utc(int64_t utc_ns) {
-    const std::time_t seconds = static_cast<std::time_t>(utc_ns / 1000000000);
-    const int millis = static_cast<int>((utc_ns % 1000000000) / 1000000);
-    std::tm tm{};
-    gmtime_r(&seconds, &tm);
-    char text[96];
-    std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", tm.tm_year + 1900, tm.tm_mon + 1,
-                  tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, millis);
-    return text;
-}
-
 }  // namespace
 
 void write_track_csv(const std::string& path, const std::vector<pn_position_t>& positions) {
@@ -112,6 +113,24 @@ void write_track_csv(const std::string& path, const std::vector<pn_position_t>& 
                      static_cast<double>(p.header.t_ns) * 1e-9, p.pos_enu_m[0], p.pos_enu_m[1],
                      p.pos_enu_m[2], heading_deg(p.heading_rad), floor, p.cov_enu_m2[0], p.cov_enu_m2[1],
                      p.cov_enu_m2[4], p.cov_enu_m2[8]);
+    }
+    out.close();
+}
+
+void write_geo_track_csv(const std::string& path, const std::vector<pn_position_t>& positions,
+                         const Origin& origin) {
+    if (!origin.known)
+        throw std::runtime_error(path + ": latitude and longitude need a geodetic origin (--origin, the config's, "
+                                        "a map's or a GNSS fix's); none is known");
+    OutFile out(path);
+    std::fprintf(out.get(), "t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m\n");
+    for (const auto& p : positions) {
+        double lat = 0, lon = 0, h = 0;
+        geodesy::enu_to_geodetic(origin, p.pos_enu_m, &lat, &lon, &h);
+        char floor[16] = "";
+        if (has_floor(p)) std::snprintf(floor, sizeof floor, "%d", p.floor);
+        std::fprintf(out.get(), "%.9f,%.10f,%.10f,%.4f,%.4f,%s,%s,%.4g\n", static_cast<double>(p.header.t_ns) * 1e-9,
+                     lat, lon, h, heading_deg(p.heading_rad), floor, position_source_name(p.source), h_sigma_m(p));
     }
     out.close();
 }
@@ -132,14 +151,26 @@ void write_steps_csv(const std::string& path, const std::vector<pn_stride_t>& st
 }
 
 void write_geojson(const std::string& path, const std::vector<pn_position_t>& positions,
-                   const std::vector<pn_stride_t>& strides, const Origin& origin) {
+                   const std::vector<pn_stride_t>& strides, const Origin& origin, const GeoJsonExtras& extras) {
     using nlohmann::json;
     json features = json::array();
     json line = json::array();
-    json times = json::array();
+    json times = json::array(), sources = json::array(), floors = json::array();
+    json position_points = json::array();
     for (size_t i : thinned(positions)) {
-        line.push_back(coordinates(positions[i].pos_enu_m, origin));
-        times.push_back(static_cast<double>(positions[i].header.t_ns) * 1e-9);
+        const pn_position_t& p = positions[i];
+        line.push_back(coordinates(p.pos_enu_m, origin));
+        times.push_back(static_cast<double>(p.header.t_ns) * 1e-9);
+        sources.push_back(position_source_name(p.source));
+        floors.push_back(floor_of(p));
+        if (extras.position_points) {
+            position_points.push_back(point_feature(line.back(), {{"kind", "position"},
+                                                                  {"t_s", times.back()},
+                                                                  {"source", sources.back()},
+                                                                  {"floor", floors.back()},
+                                                                  {"heading_deg", heading_deg(p.heading_rad)},
+                                                                  {"h_sigma_m", h_sigma_m(p)}}));
+        }
     }
     if (!positions.empty()) {
         features.push_back({{"type", "Feature"},
@@ -147,6 +178,8 @@ void write_geojson(const std::string& path, const std::vector<pn_position_t>& po
                             {"properties",
                              {{"kind", "track"},
                               {"times_s", times},
+                              {"sources", sources},
+                              {"floors", floors},
                               {"t_start_s", times.front()},
                               {"t_end_s", times.back()}}}});
     }
@@ -182,6 +215,29 @@ void write_geojson(const std::string& path, const std::vector<pn_position_t>& po
         have_floor = true;
         last_floor = p.floor;
     }
+    for (size_t i = 1; i < positions.size(); ++i) {
+        const pn_position_t& p = positions[i];
+        if (p.source == positions[i - 1].source) continue;
+        features.push_back(point_feature(coordinates(p.pos_enu_m, origin),
+                                         {{"kind", "source_change"},
+                                          {"t_s", static_cast<double>(p.header.t_ns) * 1e-9},
+                                          {"from_source", position_source_name(positions[i - 1].source)},
+                                          {"to_source", position_source_name(p.source)}}));
+    }
+    for (auto& f : position_points) features.push_back(std::move(f));
+    if (extras.gnss_fixes != nullptr) {
+        for (const pn_gnss_t& g : *extras.gnss_fixes) {
+            // A fix is WGS-84 already; without an origin it goes to the local frame of none: left out.
+            if (!origin.known) break;
+            features.push_back(point_feature({g.lon_deg, g.lat_deg, g.height_m},
+                                             {{"kind", "gnss_fix"},
+                                              {"t_s", static_cast<double>(g.header.t_ns) * 1e-9},
+                                              {"h_accuracy_m", g.h_accuracy_m},
+                                              {"v_accuracy_m", g.v_accuracy_m},
+                                              {"satellites", g.satellites},
+                                              {"fix_type", g.fix_type}}));
+        }
+    }
     json doc = {{"type", "FeatureCollection"}, {"features", features}};
     if (origin.known) {
         doc["pednav_origin"] = {
@@ -202,7 +258,8 @@ void write_gpx(const std::string& path, const std::vector<pn_position_t>& positi
     std::FILE* f = out.get();
     std::fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     std::fprintf(f,
-                 "<gpx version=\"1.1\" creator=\"pednav\" xmlns=\"http://www.topografix.com/GPX/1/1\">\n"
+                 "<gpx version=\"1.1\" creator=\"pednav\" xmlns=\"http://www.topografix.com/GPX/1/1\"\n"
+                 "     xmlns:pednav=\"https://pednav.org/gpx/1\">\n"
                  "  <metadata>\n    <name>pednav track</name>\n");
     if (origin.known) {
         std::fprintf(f, "    <desc>pedestrian dead-reckoning track from lat %.9f lon %.9f</desc>\n",
@@ -222,10 +279,23 @@ void write_gpx(const std::string& path, const std::vector<pn_position_t>& positi
         if (origin.known && origin.utc_ns_at_zero != 0) {
             std::fprintf(f, "<time>%s</time>", iso_utc(origin.utc_ns_at_zero + p.header.t_ns).c_str());
         }
-        std::fprintf(f, "<cmt>t=%.3f s</cmt></trkpt>\n", static_cast<double>(p.header.t_ns) * 1e-9);
+        std::fprintf(f, "<cmt>t=%.3f s</cmt><type>%s</type>", static_cast<double>(p.header.t_ns) * 1e-9,
+                     position_source_name(p.source));
+        if (has_floor(p)) std::fprintf(f, "<extensions><pednav:floor>%d</pednav:floor></extensions>", p.floor);
+        std::fprintf(f, "</trkpt>\n");
     }
     std::fprintf(f, "    </trkseg>\n  </trk>\n</gpx>\n");
     out.close();
+}
+
+const char* position_source_name(int32_t source) {
+    switch (source) {
+        case PN_POSITION_SOURCE_INERTIAL: return "inertial";
+        case PN_POSITION_SOURCE_FUSED: return "fused";
+        case PN_POSITION_SOURCE_GNSS: return "gnss";
+        case PN_POSITION_SOURCE_MAP: return "map";
+        default: return "unknown";
+    }
 }
 
 }  // namespace pednav::io

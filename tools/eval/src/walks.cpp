@@ -136,7 +136,7 @@ sim::Route sim_route(const SimulatedWalk& w) {
 
 std::vector<SimulatedWalk> builtin_sim_walks(const std::string& mount, uint64_t seed) {
     std::vector<SimulatedWalk> walks;
-    for (const std::string& route : sim::builtin_route_names()) {
+    for (const char* route : {"corridor_loop", "stairs", "figure_eight", "building_tour", "outdoor_indoor"}) {
         SimulatedWalk w;
         w.route = route;
         w.mount = mount;

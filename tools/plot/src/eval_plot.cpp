@@ -45,4 +45,22 @@ WalkPlot walk_plot(const std::string& title, const eval::Track& raw, const eval:
     return p;
 }
 
+std::vector<MapPanel> walk_floor_panels(const eval::Track& raw, const eval::Truth* truth, const eval::Metrics* metrics,
+                                        const indoor_map::Map& map, const std::vector<std::string>& landmark_names) {
+    // The series of the plain figure, with the floor of each point.
+    const WalkPlot flat = walk_plot("", raw, truth, metrics);
+    const eval::Track track = metrics ? eval::apply_alignment(raw, metrics->alignment) : raw;
+    std::vector<FloorSeries> series;
+    size_t k = 0;
+    if (truth && !truth->points.empty()) {
+        FloorSeries t{flat.map.series[k++], {}};
+        for (const eval::TruthPoint& q : truth->points) t.floors.push_back(q.has_floor ? q.floor : 0);
+        series.push_back(std::move(t));
+    }
+    FloorSeries est{flat.map.series[k], {}};
+    for (const eval::TrackSample& s : track.samples) est.floors.push_back(s.has_floor ? s.floor : 0);
+    series.push_back(std::move(est));
+    return floor_panels(map, landmark_names, series);
+}
+
 }  // namespace pednav::plot

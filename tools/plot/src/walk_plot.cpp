@@ -75,7 +75,43 @@ Box data_box(const MapPanel& panel) {
         for (const Point& p : wall) b.add(p);
     for (const Series& s : panel.series)
         for (const Point& p : s.points) b.add(p);
+    for (const auto& ring : panel.no_go)
+        for (const Point& p : ring) b.add(p);
+    for (const auto& link : panel.links)
+        for (const Point& p : link) b.add(p);
+    for (const Marker& m : panel.markers) b.add(m.p);
     return b;
+}
+
+const Stroke kLink{"#ff7f0e", 2.0, false, 1.0};
+
+// The map's own drawings beyond walls: shaded no-go rings, connector arrows
+// with a head at their last point, labelled landmarks.
+template <typename ToPx>
+void draw_map_features(Svg& svg, const MapPanel& panel, ToPx to_px) {
+    for (const auto& ring : panel.no_go) {
+        std::vector<Point> px;
+        for (const Point& p : ring) px.push_back(to_px(p));
+        if (!px.empty()) px.push_back(px.front());
+        svg.polyline(px, Stroke{"#e377c2", 1.0, true, 0.8});
+    }
+    for (const auto& link : panel.links) {
+        std::vector<Point> px;
+        for (const Point& p : link) px.push_back(to_px(p));
+        svg.polyline(px, kLink);
+        if (px.size() < 2) continue;
+        const Point &a = px[px.size() - 2], &b = px.back();
+        const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
+        if (len <= 0.0) continue;
+        const double ux = (b[0] - a[0]) / len, uy = (b[1] - a[1]) / len, head = 8.0;
+        svg.line(b, {b[0] - head * (ux - 0.5 * uy), b[1] - head * (uy + 0.5 * ux)}, kLink);
+        svg.line(b, {b[0] - head * (ux + 0.5 * uy), b[1] - head * (uy - 0.5 * ux)}, kLink);
+    }
+    for (const Marker& m : panel.markers) {
+        const Point c = to_px(m.p);
+        svg.rect({c[0] - 3.5, c[1] - 3.5}, 7.0, 7.0, "#9467bd", Stroke{"#9467bd", 0.5, false, 1.0});
+        if (!m.label.empty()) svg.text({c[0] + 6.0, c[1] - 5.0}, m.label, 10.0, "start", "#9467bd");
+    }
 }
 
 void draw_map(Svg& svg, const MapPanel& panel, double ox, double oy, double w, double h) {
@@ -114,6 +150,7 @@ void draw_map(Svg& svg, const MapPanel& panel, double ox, double oy, double w, d
         for (const Point& p : wall) px.push_back(to_px(p));
         svg.polyline(px, kWall);
     }
+    draw_map_features(svg, panel, to_px);
     for (const Series& s : panel.series) {
         std::vector<Point> px;
         for (const Point& p : thin(s.points)) px.push_back(to_px(p));
@@ -185,19 +222,42 @@ std::string render_map(const MapPanel& panel, double width_px, double height_px)
     return svg.str();
 }
 
+namespace {
+
+// Height of a map panel of this width: the data's aspect ratio, within limits.
+double map_height(const MapPanel& panel, double w) {
+    const Box b = data_box(panel);
+    double h = 0.66 * w;
+    if (b.valid() && b.x1 > b.x0) h = std::clamp((w - 70.0) * (b.y1 - b.y0) / (b.x1 - b.x0) + 80.0, 0.35 * w, 1.1 * w);
+    return h;
+}
+
+}  // namespace
+
 std::string render_walk(const WalkPlot& plot) {
     const double w = plot.width_px;
-    // Map height from the data's aspect ratio, within limits.
-    const Box b = data_box(plot.map);
-    double map_h = 0.66 * w;
-    if (b.valid() && b.x1 > b.x0)
-        map_h = std::clamp((w - 70.0) * (b.y1 - b.y0) / (b.x1 - b.x0) + 80.0, 0.35 * w, 1.1 * w);
+    const double map_h = map_height(plot.map, w);
     const bool time = !plot.error.series.empty();
     const double time_h = time ? 0.33 * w : 0.0, title_h = plot.title.empty() ? 0.0 : 30.0;
     Svg svg(w, title_h + map_h + time_h);
     if (!plot.title.empty()) svg.text({w / 2.0, 21.0}, plot.title, 16.0, "middle");
     draw_map(svg, plot.map, 0.0, title_h, w, map_h);
     if (time) draw_time(svg, plot.error, 0.0, title_h + map_h, w, time_h);
+    return svg.str();
+}
+
+std::string render_map_panels(const std::string& title, const std::vector<MapPanel>& panels, double width_px) {
+    const double title_h = title.empty() ? 0.0 : 30.0;
+    double h = title_h;
+    for (const MapPanel& p : panels) h += map_height(p, width_px);
+    Svg svg(width_px, h);
+    if (!title.empty()) svg.text({width_px / 2.0, 21.0}, title, 16.0, "middle");
+    double y = title_h;
+    for (const MapPanel& p : panels) {
+        const double ph = map_height(p, width_px);
+        draw_map(svg, p, 0.0, y, width_px, ph);
+        y += ph;
+    }
     return svg.str();
 }
 

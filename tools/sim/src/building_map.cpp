@@ -126,6 +126,40 @@ std::vector<Flight> flights(const Route& r) {
     return out;
 }
 
+// A place of known height: a level stretch of the route on a whole floor, at
+// least this long, m, and this wide around its line, m.
+constexpr double kAltitudeZoneMinLengthM = 2.0;
+constexpr double kAltitudeZoneWidthM = 2.0;
+
+struct LevelStretch {
+    int floor;
+    P2 a, b;
+};
+
+// Each level segment of the route on a whole floor, once (walked back, it is the same place).
+std::vector<LevelStretch> level_stretches(const Route& r) {
+    std::vector<LevelStretch> out;
+    for (size_t i = 1; i < r.waypoints.size(); ++i) {
+        const double *a = r.waypoints[i - 1].enu_m, *b = r.waypoints[i].enu_m;
+        if (!on_a_floor(r, a[2]) || floor_of(r, a[2]) != floor_of(r, b[2]) || std::fabs(a[2] - b[2]) > 1e-6) continue;
+        if (std::hypot(b[0] - a[0], b[1] - a[1]) < kAltitudeZoneMinLengthM) continue;
+        const LevelStretch s{floor_of(r, a[2]), {a[0], a[1]}, {b[0], b[1]}};
+        auto same = [](const P2& p, const P2& q) { return std::hypot(p[0] - q[0], p[1] - q[1]) < 1e-6; };
+        if (std::none_of(out.begin(), out.end(), [&](const LevelStretch& t) {
+                return t.floor == s.floor && ((same(t.a, s.a) && same(t.b, s.b)) || (same(t.a, s.b) && same(t.b, s.a)));
+            }))
+            out.push_back(s);
+    }
+    return out;
+}
+
+// The rectangle kAltitudeZoneWidthM wide around a stretch, counter-clockwise.
+std::vector<P2> around(const LevelStretch& s) {
+    const double len = std::hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]);
+    const double h = 0.5 * kAltitudeZoneWidthM, nx = -(s.b[1] - s.a[1]) / len * h, ny = (s.b[0] - s.a[0]) / len * h;
+    return {{s.a[0] - nx, s.a[1] - ny}, {s.b[0] - nx, s.b[1] - ny}, {s.b[0] + nx, s.b[1] + ny}, {s.a[0] + nx, s.a[1] + ny}};
+}
+
 nlohmann::json feature(const nlohmann::json& geometry, const nlohmann::json& properties) {
     return {{"type", "Feature"}, {"geometry", geometry}, {"properties", properties}};
 }
@@ -152,6 +186,18 @@ nlohmann::json building_map(const Route& route) {
                                     {"pednav:floor", f.floor},
                                     {"pednav:floor_to", f.floor_to},
                                     {"pednav:direction", "both"}}));
+    }
+    // Altitude zones only where the route has floors above or below: a single-floor walk has no
+    // barometer drift to hold.
+    const bool several_floors = !flights(route).empty();
+    for (const LevelStretch& st : several_floors ? level_stretches(route) : std::vector<LevelStretch>{}) {
+        nlohmann::json ring = nlohmann::json::array();
+        for (const auto& p : around(st)) ring.push_back(lonlat(o, p));
+        ring.push_back(ring.front());
+        features.push_back(feature({{"type", "Polygon"}, {"coordinates", {ring}}},
+                                   {{"pednav:kind", "altitude_zone"},
+                                    {"pednav:floor", st.floor},
+                                    {"pednav:height_m", o.height_m + st.floor * route.floor_height_m}}));
     }
     const double* s = route.waypoints.front().enu_m;
     features.push_back(feature({{"type", "Point"}, {"coordinates", lonlat(o, {s[0], s[1]})}},

@@ -194,10 +194,33 @@ Route outdoor_indoor() {
     return r;
 }
 
+// A 440 m walk around a city block, all outdoors, for the GNSS pipelines:
+// open sky, beside tall buildings, a 60 s outage (78 m at 1.3 m/s under a
+// covered passage, with a turn), beside buildings again, open sky.
+Route gnss_outage() {
+    Route r;
+    r.name = "gnss_outage";
+    r.description =
+        "440 m around a city block, all outdoors: 120 m open sky, 60 m beside tall buildings (degraded), "
+        "a 60 s GNSS outage over 78 m with a turn, 82 m degraded, 100 m open sky back to the start";
+    r.start_still_s = 20.0;
+    auto seg = [](double x, double y, const char* quality) {
+        Waypoint w = wp(x, y, 0, true);
+        w.gnss = gnss_quality_preset(quality);
+        w.gnss_given = true;
+        return w;
+    };
+    r.waypoints = {wp(0, 0, 0, true),          seg(120, 0, "good"),      seg(120, 60, "degraded"),
+                   seg(120, 100, "none"),      seg(82, 100, "none"),     seg(0, 100, "degraded"),
+                   seg(0, 0, "good")};
+    finish(r);
+    return r;
+}
+
 }  // namespace
 
 std::vector<std::string> builtin_route_names() {
-    return {"corridor_loop", "stairs", "figure_eight", "building_tour", "outdoor_indoor"};
+    return {"corridor_loop", "stairs", "figure_eight", "building_tour", "outdoor_indoor", "gnss_outage"};
 }
 
 Route builtin_route(const std::string& name) {
@@ -206,6 +229,7 @@ Route builtin_route(const std::string& name) {
     if (name == "figure_eight") return figure_eight();
     if (name == "building_tour") return building_tour();
     if (name == "outdoor_indoor") return outdoor_indoor();
+    if (name == "gnss_outage") return gnss_outage();
     throw std::runtime_error("sim: unknown built-in route '" + name + "'");
 }
 

@@ -39,13 +39,63 @@ void check_keys(const json& j, const std::string& where, const std::set<std::str
         if (!known.count(it.key())) fail(where + "/" + it.key(), "unknown key");
 }
 
+GnssQuality parse_gnss(const json& j, const std::string& where) {
+    if (j.is_string()) {
+        try {
+            return gnss_quality_preset(j.get<std::string>());
+        } catch (const std::runtime_error&) {
+            fail(where, "must be \"good\", \"degraded\", \"none\" or an object");
+        }
+    }
+    check_keys(j, where, {"fixes", "error_scale", "satellites"});
+    GnssQuality q;
+    q.name = "custom";
+    if (j.contains("fixes")) q.fixes = boolean(j["fixes"], where + "/fixes");
+    if (j.contains("error_scale")) q.error_scale = number(j["error_scale"], where + "/error_scale", 0.1, 100.0);
+    if (j.contains("satellites")) {
+        if (!j["satellites"].is_number_integer()) fail(where + "/satellites", "must be an integer");
+        q.satellites = static_cast<int>(number(j["satellites"], where + "/satellites", 0.0, 64.0));
+    }
+    return q;
+}
+
+json gnss_to_json(const GnssQuality& q) {
+    if (q.name != "custom") return q.name;
+    return {{"fixes", q.fixes}, {"error_scale", q.error_scale}, {"satellites", q.satellites}};
+}
+
 }  // namespace
+
+GnssQuality gnss_quality_preset(const std::string& name) {
+    GnssQuality q;
+    q.name = name;
+    if (name == "good") return q;
+    if (name == "degraded") {
+        q.error_scale = 4.0;
+        q.satellites = 6;
+        return q;
+    }
+    if (name == "none") {
+        q.fixes = false;
+        q.satellites = 0;
+        return q;
+    }
+    throw std::runtime_error("sim: unknown GNSS quality '" + name + "' (good, degraded or none)");
+}
+
+const GnssQuality& segment_gnss(const Route& route, size_t segment) {
+    static const GnssQuality good = gnss_quality_preset("good"), none = gnss_quality_preset("none");
+    if (segment + 1 >= route.waypoints.size()) return none;
+    const Waypoint& w = route.waypoints[segment + 1];
+    if (w.gnss_given) return w.gnss;
+    return w.outdoor ? good : none;
+}
 
 Route parse_route(const json& j) {
     check_keys(j, "",
                {"format", "name", "description", "waypoints", "speed_mps", "step_length_m", "stance_fraction",
                 "stair_rise_m", "stair_run_m", "stairs_step_period_s", "floor_height_m", "start_still_s",
-                "end_still_s", "origin", "mag_disturbances", "walls"});
+                "end_still_s", "origin", "mag_disturbances", "walls", "gnss_jumps"});
     Route r;
     if (j.contains("format") && j["format"] != "pednav-route/1")
         fail("/format", "must be \"pednav-route/1\"");
@@ -87,7 +137,7 @@ Route parse_route(const json& j) {
         if (wps[i].is_array()) {
             vec(wps[i], w, 3, wp.enu_m);
         } else {
-            check_keys(wps[i], w, {"enu_m", "stairs", "outdoor", "still_s"});
+            check_keys(wps[i], w, {"enu_m", "stairs", "outdoor", "still_s", "gnss"});
             if (!wps[i].contains("enu_m")) fail(w + "/enu_m", "missing");
             vec(wps[i]["enu_m"], w + "/enu_m", 3, wp.enu_m);
             if (wps[i].contains("stairs"))
@@ -95,6 +145,10 @@ Route parse_route(const json& j) {
             if (wps[i].contains("outdoor")) wp.outdoor = boolean(wps[i]["outdoor"], w + "/outdoor");
             if (wps[i].contains("still_s"))
                 wp.still_s = number(wps[i]["still_s"], w + "/still_s", 0.0, 3600.0);
+            if (wps[i].contains("gnss")) {
+                wp.gnss = parse_gnss(wps[i]["gnss"], w + "/gnss");
+                wp.gnss_given = true;
+            }
         }
         if (i > 0 && !stairs_given) wp.stairs = std::fabs(wp.enu_m[2] - r.waypoints.back().enu_m[2]) > 1e-6;
         if (i > 0 && !wp.stairs && std::fabs(wp.enu_m[2] - r.waypoints.back().enu_m[2]) > 1e-6) {
@@ -143,6 +197,21 @@ Route parse_route(const json& j) {
             r.walls.push_back(std::move(wall));
         }
     }
+    if (j.contains("gnss_jumps")) {
+        const json& gj = j["gnss_jumps"];
+        if (!gj.is_array()) fail("/gnss_jumps", "must be an array");
+        for (size_t i = 0; i < gj.size(); ++i) {
+            const std::string w = "/gnss_jumps/" + std::to_string(i);
+            check_keys(gj[i], w, {"t_s", "duration_s", "offset_enu_m"});
+            GnssJump jump;
+            for (const char* key : {"t_s", "duration_s", "offset_enu_m"})
+                if (!gj[i].contains(key)) fail(w + "/" + key, "missing");
+            jump.t_s = number(gj[i]["t_s"], w + "/t_s", 0.0, 1e6);
+            jump.duration_s = number(gj[i]["duration_s"], w + "/duration_s", 0.0, 1e6);
+            vec(gj[i]["offset_enu_m"], w + "/offset_enu_m", 3, jump.offset_enu_m);
+            r.gnss_jumps.push_back(jump);
+        }
+    }
     return r;
 }
 
@@ -163,11 +232,14 @@ json route_to_json(const Route& r) {
     j["origin"] = {
         {"lat_deg", r.origin_lat_deg}, {"lon_deg", r.origin_lon_deg}, {"height_m", r.origin_height_m}};
     j["waypoints"] = json::array();
-    for (const Waypoint& w : r.waypoints)
-        j["waypoints"].push_back({{"enu_m", {w.enu_m[0], w.enu_m[1], w.enu_m[2]}},
-                                  {"stairs", w.stairs},
-                                  {"outdoor", w.outdoor},
-                                  {"still_s", w.still_s}});
+    for (const Waypoint& w : r.waypoints) {
+        json wj = {{"enu_m", {w.enu_m[0], w.enu_m[1], w.enu_m[2]}},
+                   {"stairs", w.stairs},
+                   {"outdoor", w.outdoor},
+                   {"still_s", w.still_s}};
+        if (w.gnss_given) wj["gnss"] = gnss_to_json(w.gnss);  // absent = the default: route.json unchanged
+        j["waypoints"].push_back(wj);
+    }
     j["mag_disturbances"] = json::array();
     for (const MagDisturbance& d : r.mag_disturbances)
         j["mag_disturbances"].push_back(
@@ -179,6 +251,13 @@ json route_to_json(const Route& r) {
         json pts = json::array();
         for (const auto& p : w.points_enu_m) pts.push_back({p[0], p[1]});
         j["walls"].push_back({{"floor", w.floor}, {"points_enu_m", pts}});
+    }
+    if (!r.gnss_jumps.empty()) {
+        j["gnss_jumps"] = json::array();
+        for (const GnssJump& g : r.gnss_jumps)
+            j["gnss_jumps"].push_back({{"t_s", g.t_s},
+                                       {"duration_s", g.duration_s},
+                                       {"offset_enu_m", {g.offset_enu_m[0], g.offset_enu_m[1], g.offset_enu_m[2]}}});
     }
     return j;
 }

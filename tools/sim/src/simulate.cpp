@@ -129,7 +129,8 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
     if (options.with_mag) out.mag.reserve(n / mag_every + 1);
     if (options.with_baro) out.baro.reserve(n / baro_every + 1);
 
-    // GNSS: one fix every 1/gnss_rate s on outdoor segments, error = Gauss-Markov + white.
+    // GNSS: one fix every 1/gnss_rate s where the route has reception, error = Gauss-Markov + white,
+    // scaled by the segment's quality, plus the multipath jumps.
     const double gnss_period_s = 1.0 / options.gnss_rate_hz;
     double next_fix_s = 0.0;
     Eigen::Vector3d gm = Eigen::Vector3d::Zero();
@@ -196,8 +197,9 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
             b.temperature_c = 20.0;
             out.baro.push_back(b);
         }
-        const size_t seg = static_cast<size_t>(s.segment) + 1;
-        const bool outdoor = seg < route.waypoints.size() && route.waypoints[seg].outdoor;
+        // The segment's reception: the error sigmas and the reported accuracy
+        // scale together (a scale of 1 leaves every number as it was).
+        const GnssQuality& quality = segment_gnss(route, static_cast<size_t>(s.segment));
         if (options.with_gnss && t + 1e-12 >= next_fix_s) {
             next_fix_s += gnss_period_s;
             if (err) {
@@ -209,18 +211,23 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
                                                        options.gnss_sigma_v_m * rng_gnss.normal());
                 last_gm_s = t;
             }
-            if (outdoor) {
+            if (quality.fixes) {
+                const double scale = quality.error_scale;
                 auto g = make_record<pn_gnss_t>(PN_REC_GNSS, t_ns);
                 Eigen::Vector3d p = s.p_enu_m;
                 if (err)
-                    p += gm +
-                         options.gnss_white_h_m * Eigen::Vector3d(rng_gnss.normal(), rng_gnss.normal(), 0.0);
+                    p += scale * gm + scale * options.gnss_white_h_m *
+                                          Eigen::Vector3d(rng_gnss.normal(), rng_gnss.normal(), 0.0);
+                for (const std::vector<GnssJump>* jumps : {&route.gnss_jumps, &options.gnss_jumps})
+                    for (const GnssJump& j : *jumps)
+                        if (t + 1e-9 >= j.t_s && t + 1e-9 < j.t_s + j.duration_s)
+                            p += Eigen::Vector3d(j.offset_enu_m[0], j.offset_enu_m[1], j.offset_enu_m[2]);
                 const double pe[3] = {p.x(), p.y(), p.z()};
                 geodesy::enu_to_geodetic(origin, pe, &g.lat_deg, &g.lon_deg, &g.height_m);
-                g.h_accuracy_m = err ? std::sqrt(2.0 * (options.gnss_sigma_h_m * options.gnss_sigma_h_m +
-                                                        options.gnss_white_h_m * options.gnss_white_h_m))
+                g.h_accuracy_m = err ? scale * std::sqrt(2.0 * (options.gnss_sigma_h_m * options.gnss_sigma_h_m +
+                                                                options.gnss_white_h_m * options.gnss_white_h_m))
                                      : 0.01;
-                g.v_accuracy_m = err ? options.gnss_sigma_v_m : 0.01;
+                g.v_accuracy_m = err ? scale * options.gnss_sigma_v_m : 0.01;
                 // Receiver velocity: the walking velocity over the last period (the body's, not the swinging
                 // foot's).
                 const size_t back =
@@ -229,9 +236,11 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
                 const double dt = t - old.t_s;
                 for (int i = 0; i < 3; ++i) {
                     g.vel_enu_mps[i] = dt > 0.0 ? (ts.pos_enu_m[i] - old.pos_enu_m[i]) / dt : 0.0;
-                    if (err) g.vel_enu_mps[i] += options.gnss_vel_noise_mps * rng_gnss.normal();
+                    if (err) g.vel_enu_mps[i] += scale * options.gnss_vel_noise_mps * rng_gnss.normal();
                 }
                 g.header.flags = PN_GNSS_FLAG_HAS_VELOCITY;
+                g.satellites = quality.satellites;
+                g.fix_type = PN_GNSS_FIX_AUTONOMOUS;
                 out.gnss.push_back(g);
             }
         }

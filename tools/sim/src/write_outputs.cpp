@@ -86,12 +86,19 @@ void write_outputs(const SimOutput& out, const Route& route, const std::string& 
     }
     std::fclose(f);
 
+    // GNSS: the GNSS CSV that `pednav run --gnss` reads (docs/formats.md): t on the
+    // input's clock, ellipsoidal height, 1-sigma accuracies, speed and course
+    // over ground (the vertical velocity is not in the format).
     f = open_or_throw(out_dir + "/gnss.csv");
-    std::fprintf(f, "t,lat_deg,lon_deg,height_m,h_accuracy_m,v_accuracy_m,ve,vn,vu\n");
-    for (const pn_gnss_t& g : out.gnss)
-        std::fprintf(f, "%.9f,%.9f,%.9f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
-                     static_cast<double>(g.header.t_ns) * 1e-9, g.lat_deg, g.lon_deg, g.height_m,
-                     g.h_accuracy_m, g.v_accuracy_m, g.vel_enu_mps[0], g.vel_enu_mps[1], g.vel_enu_mps[2]);
+    std::fprintf(f, "t,lat,lon,alt,hacc,vacc,speed,course,sats,fix\n");
+    for (const pn_gnss_t& g : out.gnss) {
+        const double speed = std::hypot(g.vel_enu_mps[0], g.vel_enu_mps[1]);
+        double course = std::atan2(g.vel_enu_mps[0], g.vel_enu_mps[1]) * 180.0 / M_PI;
+        if (course < 0.0) course += 360.0;
+        std::fprintf(f, "%.9f,%.9f,%.9f,%.3f,%.3f,%.3f,%.3f,%.2f,%d,%d\n",
+                     static_cast<double>(g.header.t_ns) * 1e-9, g.lat_deg, g.lon_deg, g.height_m, g.h_accuracy_m,
+                     g.v_accuracy_m, speed, course, g.satellites, g.fix_type);
+    }
     std::fclose(f);
 
     std::ofstream(out_dir + "/building.geojson") << building_map(route).dump(1) << '\n';

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -63,6 +64,7 @@ struct SensorLog {
     Origin truth_origin;             // origin of the truth points when they came as lat/lon
     std::string axes;                // the body axes of the records, e.g. "sensor x,y,z (NGIMU case)"
     size_t issues_not_listed = 0;    // issues beyond ReadOptions::max_issues: counted, not kept in `issues`
+    int64_t utc_ns_at_zero = 0;      // UTC (ns since 1970) of t = 0 when the file tells it (NMEA dates), else 0
 
     const StreamInfo* stream(const std::string& name) const;
 };

@@ -22,16 +22,36 @@ void write_track_csv(const std::string& path, const std::vector<pn_position_t>& 
 // Header index,t_start,t_end,dx,dy,dz,length_m,heading_change_deg,class,cov_xx,cov_xy,cov_yy,cov_zz.
 void write_steps_csv(const std::string& path, const std::vector<pn_stride_t>& strides);
 
-// FeatureCollection: a LineString of the track, a Point per step (end of the
-// stride) and per floor change, with times. Coordinates are WGS-84
-// [lon, lat, height] when origin.known, else local metres [x, y, z]
-// (then the collection carries "crs_local_enu_m": true).
-void write_geojson(const std::string& path, const std::vector<pn_position_t>& positions,
-                   const std::vector<pn_stride_t>& strides, const Origin& origin);
+// Header t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m: the
+// track in WGS-84 through `origin` (the engine's: the same exact conversion as
+// pn_engine_geo_from_enu), source = inertial, fused, gnss or map (the mode of
+// the position filter), h_sigma_m = sqrt(cov_xx + cov_yy). Throws
+// std::runtime_error when the origin is not known or on I/O failure.
+void write_geo_track_csv(const std::string& path, const std::vector<pn_position_t>& positions,
+                         const Origin& origin);
 
-// GPX 1.1 track. GPX is WGS-84 only: with no known origin the track is placed
+// What a GeoJSON may carry besides the track, its steps and floor changes.
+struct GeoJsonExtras {
+    bool position_points = false;               // a Point per (thinned) position with its properties
+    const std::vector<pn_gnss_t>* gnss_fixes = nullptr;  // the input's fixes, a Point each
+};
+
+// FeatureCollection: a LineString of the track (per-vertex times, sources and
+// floors), a Point per step (end of the stride), per floor change and per
+// change of source, with times. Coordinates are WGS-84 [lon, lat, height]
+// when origin.known, else local metres [x, y, z] (then the collection carries
+// "crs_local_enu_m": true).
+void write_geojson(const std::string& path, const std::vector<pn_position_t>& positions,
+                   const std::vector<pn_stride_t>& strides, const Origin& origin,
+                   const GeoJsonExtras& extras = {});
+
+// GPX 1.1 track, each point with its source as <type> and its floor in
+// <extensions>. GPX is WGS-84 only: with no known origin the track is placed
 // at lat/lon 0/0 (documented; the file says so in <desc>).
 void write_gpx(const std::string& path, const std::vector<pn_position_t>& positions, const Origin& origin);
+
+// "inertial", "fused", "gnss", "map" (PN_POSITION_SOURCE_*), "unknown" otherwise.
+const char* position_source_name(int32_t source);
 
 // Horizontal length of the track in metres: the sum of the east-north steps
 // between consecutive positions (the summary's "distance_m").

@@ -99,7 +99,8 @@ struct SimulatedWalk {
 sim::SimOptions sim_options(const SimulatedWalk& walk);
 sim::Route sim_route(const SimulatedWalk& walk);  // throws for an unknown route
 
-// pednav report: every built-in route with `mount`, the simulator's defaults
+// pednav report: the built-in routes corridor_loop, stairs, figure_eight,
+// building_tour and outdoor_indoor with `mount`, the simulator's defaults
 // (consumer-grade errors, barometer and GNSS) and `seed`.
 std::vector<SimulatedWalk> builtin_sim_walks(const std::string& mount, uint64_t seed);
 

@@ -9,6 +9,7 @@
 #include <pednav_eval/metrics.hpp>
 #include <pednav_eval/track.hpp>
 #include <pednav_eval/truth.hpp>
+#include <pednav_plot/floor_plot.hpp>
 #include <pednav_plot/walk_plot.hpp>
 
 namespace pednav::plot {
@@ -17,5 +18,12 @@ namespace pednav::plot {
 // The track is drawn as aligned by metrics->alignment when given.
 WalkPlot walk_plot(const std::string& title, const eval::Track& track, const eval::Truth* truth,
                    const eval::Metrics* metrics);
+
+// The same walk over a building map, one panel per floor (floor_plot.hpp):
+// truth and track split by the floor of each point (points without one on
+// floor 0). truth and metrics may be null.
+std::vector<MapPanel> walk_floor_panels(const eval::Track& track, const eval::Truth* truth,
+                                        const eval::Metrics* metrics, const indoor_map::Map& map,
+                                        const std::vector<std::string>& landmark_names);
 
 }  // namespace pednav::plot

@@ -20,10 +20,19 @@ struct Series {
     bool markers = false;  // a dot at every point (checkpoints, footprints)
 };
 
+// A named point of the map (a landmark, a door).
+struct Marker {
+    Point p;
+    std::string label;
+};
+
 struct MapPanel {
     std::string title;
     std::vector<std::vector<Point>> walls;  // metres, drawn grey
     std::vector<Series> series;             // truth first, then estimates
+    std::vector<std::vector<Point>> no_go;  // rings where a walker cannot be, shaded
+    std::vector<std::vector<Point>> links;  // stairs, escalators, lifts: arrows to their head
+    std::vector<Marker> markers;            // landmarks, drawn as labelled squares
 };
 
 struct TimePanel {
@@ -43,6 +52,8 @@ struct WalkPlot {
 // series) the time panel below it.
 std::string render_map(const MapPanel& panel, double width_px = 900.0, double height_px = 600.0);
 std::string render_walk(const WalkPlot& plot);
+// Map panels one above the other (one per floor), under a title.
+std::string render_map_panels(const std::string& title, const std::vector<MapPanel>& panels, double width_px = 900.0);
 
 // "Nice" tick positions covering [lo, hi] (1, 2, 5 x 10^k steps), about `target` of them.
 std::vector<double> nice_ticks(double lo, double hi, int target = 6);

@@ -2,7 +2,8 @@
 // A route's building as a pednav.map/1 document (docs/maps.md), the
 // building.geojson of a simulated walk: its walls, with a doorway wherever the
 // route passes through one, its flights of stairs as `stairs` arrows between
-// the floors they join, the start as a landmark, and the path as a GIS extra.
+// the floors they join, altitude zones along its level stretches (when it has
+// more than one floor), the start as a landmark, and the path as a GIS extra.
 #pragma once
 
 #include <nlohmann/json.hpp>

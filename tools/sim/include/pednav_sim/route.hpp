@@ -14,12 +14,37 @@
 
 namespace pednav::sim {
 
+// GNSS reception along a segment: whether there are fixes, how large the
+// receiver's errors are against SimOptions' (which are "good"), and what the
+// records say of the solution.
+struct GnssQuality {
+    std::string name = "good";  // "good", "degraded", "none", or "custom" (given as an object)
+    bool fixes = true;          // false: no fix at all (a tunnel, a covered passage)
+    double error_scale = 1.0;   // multiplies every GNSS error sigma and the accuracy the fixes report
+    int satellites = 12;        // pn_gnss_t.satellites
+};
+
+// The presets: "good" (open sky: scale 1, 12 satellites), "degraded" (beside
+// tall buildings: scale 4, 6 satellites), "none"; throws for another name.
+GnssQuality gnss_quality_preset(const std::string& name);
+
 // Waypoint i > 0 also describes the segment that leads to it from waypoint i-1.
 struct Waypoint {
     double enu_m[3] = {0.0, 0.0, 0.0};
     bool stairs = false;   // segment i-1 -> i is a flight of stairs (default: true when the height changes)
     bool outdoor = false;  // segment i-1 -> i is outdoors: GNSS fixes are available on it
     double still_s = 0.0;  // the walker stands still this long on arrival
+    // GNSS on segment i-1 -> i when given; otherwise "good" outdoors, "none" indoors.
+    bool gnss_given = false;
+    GnssQuality gnss;
+};
+
+// Multipath: from t_s for duration_s every fix is off by offset_enu_m (the
+// accuracy it reports does not change: the receiver does not know).
+struct GnssJump {
+    double t_s = 0.0;
+    double duration_s = 0.0;
+    double offset_enu_m[3] = {0.0, 0.0, 0.0};
 };
 
 // A local magnetic disturbance (steel, machinery): `field_ut` (ENU) is added to
@@ -54,7 +79,11 @@ struct Route {
     double origin_height_m = 50.0;  // ellipsoidal height of the ENU origin
     std::vector<MagDisturbance> mag_disturbances;
     std::vector<Wall> walls;
+    std::vector<GnssJump> gnss_jumps;
 };
+
+// The GNSS quality on segment `segment` (into waypoint segment + 1).
+const GnssQuality& segment_gnss(const Route& route, size_t segment);
 
 // Parses a route document; throws std::runtime_error naming the bad key
 // (as a JSON pointer, e.g. "/waypoints/3/enu_m").
@@ -62,7 +91,7 @@ Route parse_route(const nlohmann::json& j);
 // The inverse of parse_route (round trip).
 nlohmann::json route_to_json(const Route& route);
 
-// "corridor_loop", "stairs", "figure_eight", "building_tour", "outdoor_indoor";
+// "corridor_loop", "stairs", "figure_eight", "building_tour", "outdoor_indoor", "gnss_outage";
 // throws std::runtime_error for an unknown name.
 Route builtin_route(const std::string& name);
 std::vector<std::string> builtin_route_names();

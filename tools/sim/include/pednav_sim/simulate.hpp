@@ -41,7 +41,7 @@ struct SimOptions {
     double mounting_rpy_deg[3] = {0.0, 0.0, 0.0};
     bool with_mag = true;
     bool with_baro = true;
-    bool with_gnss = true;  // fixes only on outdoor segments
+    bool with_gnss = true;  // fixes where the route has GNSS (outdoor segments, or their `gnss` quality)
     // Magnetometer and barometer rates: 0 = with every IMU sample, otherwise on every
     // round(rate_hz / x)-th IMU sample.
     double mag_rate_hz = 0.0;
@@ -62,6 +62,8 @@ struct SimOptions {
     double gnss_white_h_m = 0.5;  // per horizontal axis: white part
     double gnss_sigma_v_m = 3.0;  // vertical
     double gnss_vel_noise_mps = 0.1;
+    // Multipath jumps besides the route's own (Route::gnss_jumps).
+    std::vector<GnssJump> gnss_jumps;
 };
 
 struct TruthSample {
@@ -95,7 +97,7 @@ SimOutput simulate(const Route& route, const SimOptions& options);
 // Writes into out_dir (created if needed):
 //   input.csv      canonical engine input, header t,ax,ay,az,gx,gy,gz[,mx,my,mz][,p]
 //   truth.csv      t,x,y,z,qw,qx,qy,qz,vx,vy,vz,stance,step,floor,heading_deg
-//   gnss.csv       t,lat_deg,lon_deg,height_m,h_accuracy_m,v_accuracy_m,ve,vn,vu
+//   gnss.csv       t,lat,lon,alt,hacc,vacc,speed,course,sats,fix (the GNSS CSV of docs/formats.md)
 //   building.geojson  the route's map, pednav.map/1 (building_map.hpp)
 //   route.json     the route document
 void write_outputs(const SimOutput& out, const Route& route, const std::string& out_dir);
