@@ -10,7 +10,7 @@
 #include <pednav_eval/config_patch.hpp>
 #include <pednav_eval/metrics.hpp>
 #include <pednav_indoor_map/geojson_map.hpp>
-#include <pednav_indoor_map/geometry_2d.hpp>
+#include <pednav_indoor_map/wall_crossings.hpp>
 #include <pednav_sim/building_map.hpp>
 #include <pednav_sim/simulate.hpp>
 
@@ -27,18 +27,13 @@ std::string read_text(const std::string& path) {
 }
 
 int count_crossings(const indoor_map::Map& m, const std::vector<pn_position_t>& track) {
-    int n = 0;
-    for (size_t i = 1; i < track.size(); ++i) {
-        const pn_position_t &a = track[i - 1], &b = track[i];
-        if (a.floor != b.floor) continue;
-        const indoor_map::Point2 p{a.pos_enu_m[0], a.pos_enu_m[1]}, q{b.pos_enu_m[0], b.pos_enu_m[1]};
-        for (const auto& w : m.walls)
-            if (w.floor == a.floor && indoor_map::segments_intersect(p, q, w.a, w.b)) {
-                ++n;
-                break;
-            }
+    std::vector<indoor_map::Point2> points;
+    std::vector<int> floors;
+    for (const pn_position_t& p : track) {
+        points.push_back({p.pos_enu_m[0], p.pos_enu_m[1]});
+        floors.push_back(p.floor);
     }
-    return n;
+    return static_cast<int>(indoor_map::wall_crossings(m, points, floors).size());
 }
 
 }  // namespace
