@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (mounts.empty()) mounts = {"foot", "chest", "waist"};
+    if (mounts.empty()) mounts = {"foot", "chest", "handheld", "waist"};
     std::printf("{\n  \"benchmark\": \"pipeline_throughput\",\n  \"rate_hz\": %.0f,\n  \"mounts\": [", rate_hz);
     bool first = true;
     size_t total_failures = 0;

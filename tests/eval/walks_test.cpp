@@ -63,7 +63,7 @@ TEST_CASE("walk list: each dataset's mount, alignment, truth and sensor range") 
     CHECK_THROWS_WITH_AS(ipol_walk(kData, "5-2", "hand"), doctest::Contains("unknown part 'hand'"),
                          std::runtime_error);
     const RecordedWalk h = humolire_walk(kData, "user1_straight");
-    CHECK(h.mount == "chest");
+    CHECK(h.mount == "handheld");
     CHECK(h.give_start);
     CHECK(std::isfinite(read_walk_truth(h).start_heading_deg));
 }

@@ -43,9 +43,10 @@ MatchedRecordingScore run_humolire_walk(const std::string& data_dir, const std::
                                         const std::string& preset_path, const std::string& plugin_dir,
                                         const std::string& work_dir) {
     const eval::RecordedWalk w = eval::humolire_walk(data_dir, walk);
-    // The keypoints in the map's metres with y down the image, flipped to
-    // north up, then moved so that the start is (0, 0) as in the converted map.
-    eval::Truth truth = eval::read_humolire(w.truth_path, true);
+    // The keypoints in metres, y up (the frame the track agrees with from the
+    // given start and heading); the map's pixels have y down the image, which
+    // the converter turns north up. Both are moved so that the start is (0, 0).
+    eval::Truth truth = eval::read_humolire(w.truth_path, false);
     const double sx = truth.start_x_m, sy = truth.start_y_m;
     for (auto& p : truth.points) p.x_m -= sx, p.y_m -= sy;
 

@@ -16,17 +16,18 @@ using namespace pednav::test;
 
 namespace {
 
-MatchedWalk foot_walk(const std::string& route, uint64_t seed) {
+MatchedWalk mount_walk(const std::string& mount, const std::string& route, uint64_t seed) {
     MatchedWalk w;
     w.walk.route = route;
-    w.walk.mount = "foot";
+    w.walk.mount = mount;
     w.walk.seed = seed;
     w.walk.with_baro = true;
-    w.config_path = std::string(PEDNAV_SOURCE_DIR) + "/configs/foot.json";
+    w.config_path = std::string(PEDNAV_SOURCE_DIR) + "/configs/" + mount + ".json";
     w.plugin_dir = PEDNAV_PLUGIN_OUTPUT_DIR;
     w.work_dir = PEDNAV_TEST_WORK_DIR;
     return w;
 }
+MatchedWalk foot_walk(const std::string& route, uint64_t seed) { return mount_walk("foot", route, seed); }
 
 }  // namespace
 
@@ -45,6 +46,35 @@ TEST_CASE("issue 13: simulated multi-floor walks with their map, behind the foot
             }
             CHECK(s.floor_right >= 0.99);
             CHECK(s.ipin_p75_m < 1.0);
+            CHECK(s.crossings == 0);
+            CHECK(s.recoveries == 0);
+        }
+}
+
+// Measured bounds where the issue's targets (floor right 99 %, IPIN p75 under
+// 1 m) are not reached behind the chest and handheld step models: their
+// tracks are 2-10 m off without the map, the matcher brings them to 1.0-2.9 m
+// (p75); the chest pipeline gives one position per step, and on the
+// half-way landings the simulator's truth floor follows the body's bounce (at
+// a footfall the body is lowest and the landing counts as the floor below),
+// while the matcher rounds a half floor up (docs/map-matcher.md).
+TEST_CASE("simulated multi-floor walks with their map, behind the chest and handheld pipelines") {
+    struct Bound {
+        const char *mount, *route;
+        double floor_right_min, ipin_p75_max_m;
+    };
+    for (const Bound& b : {Bound{"chest", "stairs", 0.93, 1.5}, Bound{"chest", "building_tour", 0.98, 3.2},
+                           Bound{"handheld", "stairs", 0.94, 1.3}, Bound{"handheld", "building_tour", 0.98, 1.8}})
+        for (uint64_t seed : {1, 2}) {
+            const MatchedWalkScore s = run_matched_walk(mount_walk(b.mount, b.route, seed));
+            MESSAGE(b.mount << " " << b.route << " seed " << seed << ": floor right " << 100 * s.floor_right
+                            << " %, IPIN p75 " << s.ipin_p75_m << " m, horizontal p75 " << s.horizontal_p75_m
+                            << " m (without the map " << s.raw_p75_m << " m), max " << s.horizontal_max_m
+                            << " m, crossings " << s.crossings << ", recoveries " << s.recoveries
+                            << ", fewest live particles " << s.min_live);
+            CHECK(s.floor_right >= b.floor_right_min);
+            CHECK(s.ipin_p75_m < b.ipin_p75_max_m);
+            CHECK(s.horizontal_p75_m < s.raw_p75_m);
             CHECK(s.crossings == 0);
             CHECK(s.recoveries == 0);
         }

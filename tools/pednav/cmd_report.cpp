@@ -28,6 +28,7 @@
 #include <pednav_sim/simulate.hpp>
 
 #include "cli_common.hpp"
+#include "report_suite_chest.hpp"
 #include "report_suites.hpp"
 
 namespace {
@@ -35,9 +36,9 @@ namespace {
 using namespace pednav;
 
 constexpr const char* kUsage =
-    "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,waist] [--only TEXT] [--seed N]\n"
+    "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,handheld,waist] [--only TEXT] [--seed N]\n"
     "                     [--no-recordings] [--no-sim] [--plugin-dir DIR] [--patch JSON] [--detector NAME]\n"
-    "       pednav report --suite full|quick|sim|sweep|tables|hupt|clip [--data DIR] [--plugin-dir DIR]\n"
+    "       pednav report --suite full|quick|sim|sweep|tables|hupt|clip|chest [--data DIR] [--plugin-dir DIR]\n"
     "                     [--patch JSON] [--detector NAME]\n"
     "  --data      the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the "
     "build)\n"
@@ -48,7 +49,8 @@ constexpr const char* kUsage =
     "              DIR/plots/<mount>-<walk>.svg; the foot suites print the foot pipeline's own tables:\n"
     "              full (simulated walks at 400 Hz, then every foot recording), quick (xio and koroglu),\n"
     "              sim (simulated walks at 100, 200, 400 Hz), sweep (gaits, mountings, rates), tables\n"
-    "              (koroglu, ZUPT only and with ZARU), hupt (HUPT against ZUPT only), clip (clipped gyro)\n";
+    "              (koroglu, ZUPT only and with ZARU), hupt (HUPT against ZUPT only), clip (clipped gyro);\n"
+    "              chest prints the chest and handheld pipelines' tables (humolire, biba, simulated walks)\n";
 
 bool exists(const std::string& p) {
     struct stat st {};
@@ -291,13 +293,29 @@ int run_suite(const std::string& suite, pednav::cli::FootSuiteSetup setup) {
     }
 }
 
+int run_chest_suite(std::string data, const std::vector<std::string>& plugin_dirs) {
+    try {
+        pednav::cli::ChestSuiteSetup setup;
+        setup.data_dir = data.empty() ? default_data_dir() : data;
+        if (!exists(setup.data_dir)) throw std::runtime_error("no shared recordings at " + setup.data_dir + " (--data)");
+        setup.chest_preset_json = cli::read_text_file(cli::default_config_dir() + "/chest.json");
+        setup.handheld_preset_json = cli::read_text_file(cli::default_config_dir() + "/handheld.json");
+        setup.plugin_dirs = plugin_dirs;
+        pednav::cli::run_chest_suite(setup);
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "pednav report: %s\n", e.what());
+        return 1;
+    }
+}
+
 }  // namespace
 
 const char* const pednav_cmd_report_usage = kUsage;
 
 int pednav_cmd_report(const std::vector<std::string>& args) {
     std::string out, data, only, suite = "accuracy", detector, accuracy_option;
-    std::vector<std::string> mounts{"foot", "chest", "waist"}, plugin_dirs{cli::default_plugin_dir()};
+    std::vector<std::string> mounts{"foot", "chest", "handheld", "waist"}, plugin_dirs{cli::default_plugin_dir()};
     uint64_t seed = 1;
     bool recordings = true, simulated = true, patched = false;
     nlohmann::json patch = nlohmann::json::object();
@@ -339,10 +357,16 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             throw pednav::cli::UsageError("unknown option " + a);
     }
     const nlohmann::json detector_and_patch = foot_patch(detector.empty() ? "shoe" : detector, patch);
+    if (suite == "chest") {
+        if (!accuracy_option.empty() || patched)
+            throw pednav::cli::UsageError((accuracy_option.empty() ? std::string("--patch/--detector") : accuracy_option) +
+                                          " is not an option of --suite chest");
+        return run_chest_suite(data, plugin_dirs);
+    }
     if (suite != "accuracy") {
         const auto& names = pednav::cli::foot_suite_names();
         if (std::find(names.begin(), names.end(), suite) == names.end())
-            throw pednav::cli::UsageError("unknown suite '" + suite + "' (accuracy, full, quick, sim, sweep, tables, hupt, clip)");
+            throw pednav::cli::UsageError("unknown suite '" + suite + "' (accuracy, full, quick, sim, sweep, tables, hupt, clip, chest)");
         if (!accuracy_option.empty())
             throw pednav::cli::UsageError(accuracy_option + " is an option of the accuracy suite, not of --suite " + suite);
         return run_suite(suite, {"", detector.empty() ? "shoe" : detector, detector_and_patch, data, plugin_dirs});

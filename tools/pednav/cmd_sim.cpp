@@ -15,9 +15,9 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: pednav sim --route FILE|NAME --out DIR [--mount foot|chest|waist] [--rate HZ] [--seed N]\n"
+    "usage: pednav sim --route FILE|NAME --out DIR [--mount foot|chest|handheld|waist] [--rate HZ] [--seed N]\n"
     "                  [--no-errors] [--mounting ROLL,PITCH,YAW] [--no-mag] [--no-baro] [--no-gnss]\n"
-    "                  [--mag-rate HZ] [--baro-rate HZ] [--heel-strike-g G]\n"
+    "                  [--mag-rate HZ] [--baro-rate HZ] [--heel-strike-g G] [--surge M] [--jitter S]\n"
     "                  [--gnss-jump T,DURATION,EAST,NORTH]...\n"
     "       pednav sim --list\n"
     "  --route     a route JSON file (pednav-route/1) or a built-in route name\n"
@@ -25,6 +25,9 @@ constexpr const char* kUsage =
     "  --no-errors exact sensors: no noise, bias, scale factor, saturation or drift\n"
     "  --mag-rate, --baro-rate  on a subset of the IMU samples (default: every sample)\n"
     "  --heel-strike-g  foot: landing transient of this peak acceleration on level floors (default 0)\n"
+    "  --surge     chest/handheld/waist: forward oscillation of the trunk at the step frequency, m\n"
+    "              (default: handheld 0.02, chest and waist 0)\n"
+    "  --jitter    irregular sample times: each sample moved by up to +-S seconds (below half the interval)\n"
     "  --gnss-jump  multipath: from T s for DURATION s every fix is EAST, NORTH metres off (repeatable)\n";
 
 }  // namespace
@@ -61,6 +64,10 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
             options.mag_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
         else if (a == "--baro-rate")
             options.baro_rate_hz = pednav::cli::parse_numbers(value(), 1, a)[0];
+        else if (a == "--surge")
+            options.surge_m = pednav::cli::parse_numbers(value(), 1, a)[0];
+        else if (a == "--jitter")
+            options.time_jitter_s = pednav::cli::parse_numbers(value(), 1, a)[0];
         else if (a == "--heel-strike-g")
             options.heel_strike_g = pednav::cli::parse_numbers(value(), 1, a)[0];
         else if (a == "--gnss-jump") {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "subcommands.hpp"
 
+#include "cmd_calibrate.hpp"
 #include "cmd_demo.hpp"
 #include "cmd_eval.hpp"
 #include "cmd_inspect.hpp"
@@ -22,6 +23,8 @@ const std::vector<PednavSubcommand>& pednav_subcommands() {
         {"map", &pednav_cmd_map, pednav_cmd_map_usage, "check a map, convert floor plans to one"},
         {"report", &pednav_cmd_report, pednav_cmd_report_usage,
          "accuracy of every recording and simulated walk"},
+        {"calibrate", &pednav_cmd_calibrate, pednav_cmd_calibrate_usage,
+         "fit a step position filter's constants to walks of known length"},
     };
     return table;
 }

@@ -24,7 +24,7 @@ public:
         "with ERRATA.md): particles with heading offset and step scale, wall and no-particle deaths, Algorithm 1 "
         "regeneration with the backtracking test, circular-mean heading, floors from the barometer through stairs "
         "and lifts, recovery when every particle dies; without a map, positions pass through with the barometer's floor";
-    static constexpr const char* const kFeatures[] = {"mount:foot", "needs:position",
+    static constexpr const char* const kFeatures[] = {"mount:chest", "mount:handheld", "mount:foot", "needs:position",
                                                       "uses:stride", nullptr};
     static constexpr uint64_t kConsumes =
         PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_BARO);

@@ -139,7 +139,8 @@ std::vector<double> step_times_from_strides(const std::vector<pn_stride_t>& stri
 std::vector<double> step_times_from_steps(const std::vector<pn_step_t>& steps) {
     std::vector<double> t;
     t.reserve(steps.size());
-    for (const pn_step_t& s : steps) t.push_back(static_cast<double>(s.header.t_ns) * 1e-9);
+    for (const pn_step_t& s : steps)
+        if (s.motion_mode != PN_STEP_MODE_STATIC) t.push_back(static_cast<double>(s.header.t_ns) * 1e-9);
     return t;
 }
 

@@ -75,7 +75,7 @@ const std::vector<std::string>& humolire_walk_names() {
 RecordedWalk humolire_walk(const std::string& data_dir, const std::string& name) {
     RecordedWalk w;
     w.name = "humolire-" + name;
-    w.mount = "chest";
+    w.mount = "handheld";
     w.input = data_dir + "/humolire-phone/" + name;
     w.truth_kind = TruthKind::landmarks;
     w.truth_path = w.input;
@@ -123,6 +123,8 @@ sim::SimOptions sim_options(const SimulatedWalk& w) {
     m.accel_bias_rw_mps2_per_rts *= w.accel_bias_walk_scale;
     if (!w.gyro_scale_errors) m.gyro_scale = 0.0;
     so.heel_strike_g = w.gait.heel_strike_g;
+    so.surge_m = w.surge_m;
+    so.time_jitter_s = w.time_jitter_s;
     return so;
 }
 
@@ -142,6 +144,7 @@ std::vector<SimulatedWalk> builtin_sim_walks(const std::string& mount, uint64_t 
         w.mount = mount;
         w.seed = seed;
         w.with_baro = w.with_gnss = true;
+        if (mount == "chest") w.surge_m = kChestSurgeM;
         walks.push_back(w);
     }
     return walks;

@@ -161,6 +161,11 @@ KinState BodyKinematics::at(double t_s) {
         k.yaw_enu_rad = s.yaw0 + dyaw * tr.f;
         k.stance = 1;
         k.segment = s.segment;
+        if (has_hand_terms()) {
+            const Profile still{0.0, 0.0, 0.0};
+            add_hand_attitude(t_s, {k.yaw_enu_rad, dyaw * tr.df, dyaw * tr.ddf}, still, still, k);
+            return k;
+        }
         euler_zyx(k.yaw_enu_rad, 0.0, 0.0, dyaw * tr.df, 0.0, 0.0, k.R_enu_body, k.w_body_radps);
         return k;
     }
@@ -194,8 +199,42 @@ KinState BodyKinematics::at(double t_s) {
     const size_t idx =
         static_cast<size_t>(std::upper_bound(s.knot_t.begin(), s.knot_t.end(), tau.f) - s.knot_t.begin());
     k.segment = s.segment_at_knot[std::min(idx, s.segment_at_knot.size() - 1)];
+    if (has_hand_terms()) {
+        // Surge along the walking direction t: (s t)'' = s'' t + 2 s' t' + s t''.
+        const Profile surge = oscillation(shape_.surge_m, w, ph, 2.0, 0.0);
+        const Eigen::Vector3d dt = yaw.df * n, ddt = yaw.ddf * n - yaw.df * yaw.df * tang;
+        // The hand: lateral with the shoulders at half the step frequency (a quarter period after the
+        // trunk's sway), vertical at the step frequency.
+        const Profile hand_lat = oscillation(shape_.hand_sway_m, w, ph, 1.0, 0.5 * M_PI);
+        const Profile hand_up = oscillation(shape_.hand_sway_m, w, ph, 2.0, 0.75 * M_PI);
+        k.p_enu_m += surge.f * tang + hand_lat.f * n + Eigen::Vector3d(0.0, 0.0, hand_up.f);
+        k.v_enu_mps += surge.df * tang + surge.f * dt + hand_lat.df * n + hand_lat.f * dn +
+                       Eigen::Vector3d(0.0, 0.0, hand_up.df);
+        k.a_enu_mps2 += surge.ddf * tang + 2.0 * surge.df * dt + surge.f * ddt + hand_lat.ddf * n +
+                        2.0 * hand_lat.df * dn + hand_lat.f * ddn + Eigen::Vector3d(0.0, 0.0, hand_up.ddf);
+        add_hand_attitude(t_s, yaw, pitch, roll, k);
+        return k;
+    }
     euler_zyx(yaw.f, pitch.f, roll.f, yaw.df, pitch.df, roll.df, k.R_enu_body, k.w_body_radps);
     return k;
+}
+
+// The attitude with the handheld terms: the constant pitch and the slow
+// wobble (three sines at incommensurate frequencies per axis) on top of the
+// body's yaw, pitch and roll.
+void BodyKinematics::add_hand_attitude(double t_s, const Profile& yaw, const Profile& pitch, const Profile& roll,
+                                       KinState& k) const {
+    const double A = shape_.wobble_rad;
+    const auto wobble = [A, t_s](double f1, double f2, double phase) {
+        const double w1 = 2.0 * M_PI * f1, w2 = 2.0 * M_PI * f2;
+        return Profile{A * (0.6 * std::sin(w1 * t_s + phase) + 0.4 * std::sin(w2 * t_s + 2.0 * phase)),
+                       A * (0.6 * w1 * std::cos(w1 * t_s + phase) + 0.4 * w2 * std::cos(w2 * t_s + 2.0 * phase)),
+                       -A * (0.6 * w1 * w1 * std::sin(w1 * t_s + phase) +
+                             0.4 * w2 * w2 * std::sin(w2 * t_s + 2.0 * phase))};
+    };
+    const Profile wy = wobble(0.23, 0.53, 0.3), wp = wobble(0.31, 0.61, 1.1), wr = wobble(0.27, 0.47, 2.0);
+    euler_zyx(yaw.f + wy.f, pitch.f + shape_.pitch_offset_rad + wp.f, roll.f + wr.f, yaw.df + wy.df,
+              pitch.df + wp.df, roll.df + wr.df, k.R_enu_body, k.w_body_radps);
 }
 
 }  // namespace pednav::sim::detail

@@ -5,10 +5,12 @@
 // oscillations, standing still (and turning on the spot) during pauses.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "gait_plan.hpp"
 #include "kinematics.hpp"
+#include "profiles.hpp"
 #include "spline.hpp"
 
 namespace pednav::sim::detail {
@@ -19,8 +21,25 @@ struct BodyShape {
     double sway_m = 0.02;      // lateral amplitude at half the step frequency
     double pitch_rad = 0.035;  // pitch oscillation amplitude at the step frequency
     double roll_rad = 0.03;    // roll oscillation amplitude at half the step frequency
+    // Terms only the handheld mount has by default (0: off, and the other
+    // mounts' trajectories stay bit for bit what they were):
+    double surge_m = 0.0;          // forward oscillation at the step frequency, fastest at each landing
+                                   // (the inverted pendulum: the trunk is lowest and fastest in double support)
+    double pitch_offset_rad = 0.0; // constant pitch, negative = nose up (a phone tilted towards the face)
+    double hand_sway_m = 0.0;      // the hand's own motion: lateral at half the step frequency, vertical at it
+    double wobble_rad = 0.0;       // slow attitude wobble of the hand (yaw, pitch, roll), 0.23 to 0.61 Hz
     static BodyShape chest() { return {}; }
     static BodyShape waist() { return {1.0, 0.025, 0.025, 0.025, 0.04}; }
+    // A phone held in front at 1.1 m, pitched 35 deg nose up, following the
+    // trunk's bounce, sway and surge, with the hand's own motion on top.
+    static BodyShape handheld() {
+        BodyShape s{1.1, 0.02, 0.015, 0.02, 0.02};
+        s.surge_m = 0.02;
+        s.pitch_offset_rad = -35.0 * M_PI / 180.0;
+        s.hand_sway_m = 0.008;
+        s.wobble_rad = 0.03;
+        return s;
+    }
 };
 
 class BodyKinematics {
@@ -31,6 +50,12 @@ public:
     const std::vector<double>& step_times_s() const { return steps_; }
 
 private:
+    bool has_hand_terms() const {
+        return shape_.surge_m != 0.0 || shape_.pitch_offset_rad != 0.0 || shape_.hand_sway_m != 0.0 ||
+               shape_.wobble_rad != 0.0;
+    }
+    void add_hand_attitude(double t_s, const Profile& yaw, const Profile& pitch, const Profile& roll,
+                           KinState& k) const;
     struct Span {  // a pause (standing, maybe turning) or a walking bout
         double t0 = 0.0, t1 = 0.0;
         bool walking = false;

@@ -88,7 +88,10 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
         throw std::runtime_error("sim: rate_hz must be within 10..2000");
     const detail::GaitPlan plan = detail::plan_gait(route);
     std::unique_ptr<detail::Trajectory> traj =
-        detail::make_trajectory(options.mount, plan, options.heel_strike_g * options.gravity_mps2);
+        detail::make_trajectory(options.mount, plan, options.heel_strike_g * options.gravity_mps2, options.surge_m);
+    if (!(options.time_jitter_s >= 0.0 && options.time_jitter_s < 0.5 / options.rate_hz))
+        throw std::runtime_error("sim: time_jitter_s must be within 0 and half the sample interval");
+    Rng rng_jitter(options.seed, 6);
 
     SimOutput out;
     out.rate_hz = options.rate_hz;
@@ -142,8 +145,9 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
     double last_gm_s = 0.0;
 
     for (size_t k = 0; k < n; ++k) {
-        const int64_t t_ns =
-            static_cast<int64_t>(std::llround(static_cast<double>(k) * 1e9 / options.rate_hz));
+        int64_t t_ns = static_cast<int64_t>(std::llround(static_cast<double>(k) * 1e9 / options.rate_hz));
+        if (options.time_jitter_s > 0.0 && k > 0)
+            t_ns += static_cast<int64_t>(std::llround((2.0 * rng_jitter.uniform() - 1.0) * options.time_jitter_s * 1e9));
         const double t = static_cast<double>(t_ns) * 1e-9;
         const KinState s = traj->at(t);
         const Eigen::Matrix3d R_enu_sensor = s.R_enu_body * R_body_sensor;

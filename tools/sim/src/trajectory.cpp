@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "trajectory.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "body_kinematics.hpp"
@@ -36,15 +37,23 @@ private:
 }  // namespace
 
 std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan,
-                                            double heel_strike_mps2) {
+                                            double heel_strike_mps2, double surge_m) {
     if (mount == "foot") {
         FootShape shape;
         shape.heel_strike_mps2 = heel_strike_mps2;
         return std::make_unique<FootTrajectory>(plan, shape);
     }
-    if (mount == "chest") return std::make_unique<BodyTrajectory>(plan, BodyShape::chest());
-    if (mount == "waist") return std::make_unique<BodyTrajectory>(plan, BodyShape::waist());
-    throw std::runtime_error("sim: unknown mount '" + mount + "' (foot, chest or waist)");
+    BodyShape shape;
+    if (mount == "chest")
+        shape = BodyShape::chest();
+    else if (mount == "waist")
+        shape = BodyShape::waist();
+    else if (mount == "handheld")
+        shape = BodyShape::handheld();
+    else
+        throw std::runtime_error("sim: unknown mount '" + mount + "' (foot, chest, handheld or waist)");
+    if (!std::isnan(surge_m)) shape.surge_m = surge_m;
+    return std::make_unique<BodyTrajectory>(plan, shape);
 }
 
 }  // namespace pednav::sim::detail

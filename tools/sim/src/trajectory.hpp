@@ -2,6 +2,7 @@
 // A body trajectory the sensor model samples: one implementation per mount.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,8 +23,9 @@ public:
     virtual std::vector<double> step_times_s() const = 0;
 };
 
-// "foot", "chest" or "waist"; throws std::runtime_error otherwise.
+// "foot", "chest", "handheld" or "waist"; throws std::runtime_error otherwise.
+// surge_m: the body's forward oscillation (BodyShape::surge_m); NaN = the mount's own.
 std::unique_ptr<Trajectory> make_trajectory(const std::string& mount, const GaitPlan& plan,
-                                            double heel_strike_mps2 = 0.0);
+                                            double heel_strike_mps2 = 0.0, double surge_m = NAN);
 
 }  // namespace pednav::sim::detail

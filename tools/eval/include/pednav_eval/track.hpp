@@ -39,7 +39,8 @@ Track read_track_csv(const std::string& path);
 std::vector<double> read_step_times_csv(const std::string& path);
 
 Track track_from_positions(const std::vector<pn_position_t>& positions);
-// Step events from strides (end of each stride) or step records.
+// Step events from strides (end of each stride) or step records (the walking
+// ones: a STATIC step record closes a pause).
 std::vector<double> step_times_from_strides(const std::vector<pn_stride_t>& strides);
 std::vector<double> step_times_from_steps(const std::vector<pn_step_t>& steps);
 

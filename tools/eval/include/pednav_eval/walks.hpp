@@ -28,7 +28,7 @@ namespace pednav::eval {
 // A shared recording with its ground truth.
 struct RecordedWalk {
     std::string name;         // as reported: "koroglu-33", "xio-short_walk", "ipol-1-1-lf", "humolire-user1_straight"
-    std::string mount;        // the pipeline that runs it: "foot", "waist" or "chest"
+    std::string mount;        // the pipeline that runs it: "foot", "waist", "chest" or "handheld"
     std::string input;        // the recording: a file, or a folder (humolire)
     TruthKind truth_kind = TruthKind::loop;
     std::string truth_path;   // the truth's file or folder; empty for a loop
@@ -58,7 +58,7 @@ constexpr double kIpolRateHz = 100.0;           // of the annotations' sample in
 constexpr double kIpolLegM = 10.0;
 RecordedWalk ipol_walk(const std::string& data_dir, const std::string& trial, const std::string& part);
 
-// humolire-phone: <name>/, a handheld phone (chest pipeline), landmarks on a
+// humolire-phone: <name>/, a handheld phone (handheld pipeline), landmarks on a
 // map; the engine is started at the known start point and heading.
 const std::vector<std::string>& humolire_walk_names();
 RecordedWalk humolire_walk(const std::string& data_dir, const std::string& name);
@@ -94,6 +94,8 @@ struct SimulatedWalk {
     double accel_bias_walk_scale = 1.0;  // and this the accelerometer bias random walk once more
     bool gyro_scale_errors = true;       // false: the gyro has no scale-factor error
     bool with_baro = false, with_gnss = false;  // IMU and magnetometer only unless set
+    double surge_m = NAN;        // the trunk's forward oscillation (SimOptions::surge_m); NaN = the mount's own
+    double time_jitter_s = 0.0;  // irregular sample times (SimOptions::time_jitter_s)
     Gait gait{"route", 0.0, 0.0, 0.0, 0.0};
 };
 sim::SimOptions sim_options(const SimulatedWalk& walk);
@@ -101,7 +103,10 @@ sim::Route sim_route(const SimulatedWalk& walk);  // throws for an unknown route
 
 // pednav report: the built-in routes corridor_loop, stairs, figure_eight,
 // building_tour and outdoor_indoor with `mount`, the simulator's defaults
-// (consumer-grade errors, barometer and GNSS) and `seed`.
+// (consumer-grade errors, barometer and GNSS) and `seed`; the chest walks with
+// the trunk surge of the handheld mount (kChestSurgeM), which the step vector
+// measures.
+constexpr double kChestSurgeM = 0.02;
 std::vector<SimulatedWalk> builtin_sim_walks(const std::string& mount, uint64_t seed);
 
 // The foot suites' walks (pednav report --suite, docs/foot-pipeline.md), each

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Walk simulator: exact kinematics of a foot-, chest- or waist-mounted IMU
+// Walk simulator: exact kinematics of a foot-, chest-, waist-mounted or handheld IMU
 // along a route, the sensor records it would produce, and the exact truth.
 //
 // Specific force and angular rate are derived analytically from the same
@@ -8,6 +8,7 @@
 // reproduces the truth. See docs/simulator.md.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,7 +34,7 @@ struct ImuErrorModel {
 };
 
 struct SimOptions {
-    std::string mount = "foot";  // "foot", "chest" or "waist"
+    std::string mount = "foot";  // "foot", "chest", "handheld" or "waist"
     double rate_hz = 200.0;      // IMU rate; magnetometer and barometer share it
     uint64_t seed = 1;           // same seed, same output, bit for bit
     bool sensor_errors = true;   // false: every sensor is exact (noise, biases, scale, saturation, drift off)
@@ -49,6 +50,13 @@ struct SimOptions {
     double gravity_mps2 = 9.80665;  // |g|, constant over the walk
     // Foot: peak vertical acceleration of a landing transient on level floors, in g (0: none).
     double heel_strike_g = 0.0;
+    // Chest, handheld, waist: the trunk's forward oscillation at the step
+    // frequency (fastest at each landing), m; NaN = the mount's own (handheld
+    // 0.02, chest and waist 0).
+    double surge_m = NAN;
+    // Irregular sample times (Android sensors): each IMU sample is moved by a
+    // uniform draw within +-time_jitter_s (own random stream; order kept); 0 = exact.
+    double time_jitter_s = 0.0;
     double earth_field_ut = 48.0;   // total intensity of the Earth field
     double inclination_deg = 64.0;  // dip, positive: field points down
     double declination_deg = 1.5;   // magnetic north east of true north
