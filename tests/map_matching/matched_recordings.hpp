@@ -29,3 +29,14 @@ MatchedRecordingScore run_humolire_walk(const std::string& data_dir, const std::
                                         const std::string& work_dir);
 
 }  // namespace pednav::test
+
+namespace pednav::test {
+
+// biba-chest-xsens/<route>.txt through `preset_path` with the map matcher
+// on map/ converted by rairyuu_to_geojson ((0, 0) at core.txt's start point),
+// started there with heading_deg. No landmarks: crossings and particles only.
+MatchedRecordingScore run_biba_route(const std::string& data_dir, const std::string& route,
+                                     const std::string& preset_path, double heading_deg,
+                                     const std::string& plugin_dir, const std::string& work_dir);
+
+}  // namespace pednav::test

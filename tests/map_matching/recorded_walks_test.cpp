@@ -35,3 +35,4 @@ TEST_CASE("humolire-phone walks on their converted map, handheld preset, error a
         CHECK(s.recoveries == 0);
     }
 }
+
