@@ -64,19 +64,27 @@ void MapMatcher::ensure_started(const TrackPosition* p) {
 
 // Moves from `from` towards `to` without crossing a wall: a move a wall cuts
 // stops wall_clearance_m short of it and slides along the wall for what is
-// left of it (so the output rounds a corner instead of sticking to it).
+// left of it (so the output rounds a corner instead of sticking to it). The
+// output track records the straight step from `from` to the result, so the
+// result is checked as such: if the slid point is not in sight of `from`, the
+// output stops where the straight move met the wall, and if even that is not
+// (rounding at a grazing angle), it stays.
 Point2 MapMatcher::move_clear_of_walls(const Point2& from, const Point2& to) const {
     const int floor = filter_->floor();
-    Point2 at = from;
+    Point2 at = from, first_stop = from;
     double re = to.e_m - from.e_m, rn = to.n_m - from.n_m;
     for (int slide = 0; slide < 4; ++slide) {
         const Point2 goal{at.e_m + re, at.n_m + rn};
         double t = 0;
         Point2 a, b;
-        if (!map_->walls.first_crossing(floor, at, goal, &t, &a, &b)) return goal;
+        if (!map_->walls.first_crossing(floor, at, goal, &t, &a, &b)) {
+            at = goal;
+            break;
+        }
         const double len = std::hypot(re, rn);
         const double safe = len > 0 ? std::max(0.0, t - c_.wall_clearance_m / len) : 0.0;
         at = {at.e_m + safe * re, at.n_m + safe * rn};
+        if (slide == 0) first_stop = at;
         // What is left of the move, along the wall.
         const double we = b.e_m - a.e_m, wn = b.n_m - a.n_m, wl2 = we * we + wn * wn;
         if (wl2 <= 0) break;
@@ -85,7 +93,9 @@ Point2 MapMatcher::move_clear_of_walls(const Point2& from, const Point2& to) con
         rn = along * wn;
         if (std::hypot(re, rn) < 1e-4) break;
     }
-    return at;
+    if (!map_->walls.crosses_wall(floor, from, at)) return at;
+    if (!map_->walls.crosses_wall(floor, from, first_stop)) return first_stop;
+    return from;
 }
 
 void MapMatcher::on_baro(int64_t t_ns, double pressure_pa) {
