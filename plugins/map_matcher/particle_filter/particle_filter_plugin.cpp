@@ -117,10 +117,13 @@ public:
             r.header.flags = PN_POSITION_FLAG_HAS_PARTICLES | (m.recovered ? PN_POSITION_FLAG_RECOVERED : 0u);
             r.live_particles = m.live_particles;
             r.recoveries = m.recoveries;
-        } else {  // no map: the track as it is, with the barometer's floor
-            r.source = p.source;
-            r.header.flags = p.header.flags & ~(PN_POSITION_FLAG_HAS_FLOOR | PN_POSITION_FLAG_HAS_PARTICLES);
-            for (int i = 0; i < 3; ++i) r.vel_enu_mps[i] = p.vel_enu_mps[i];
+        } else {  // no map: the track as it is, with the barometer's floor unless it has one
+            r = p;
+            r.header.struct_size = sizeof r;
+            if (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) {
+                emit(r);
+                return;
+            }
         }
         if (m.has_floor) {
             r.header.flags |= PN_POSITION_FLAG_HAS_FLOOR;
