@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include <pednav_barometry/params_schema.hpp>
 #include <pednav_indoor_map/geojson_map.hpp>
 #include <pednav_map_matching/map_matcher.hpp>
 #include <pednav_sdk/library.hpp>
@@ -78,18 +79,7 @@ public:
       "description": "on a floor the map gives no altitude zone, level and off stairs and lifts, the barometer's drift is reset to the floor's height (floor index x floor height), as an altitude zone would; false = only altitude zones reset it"},
     "wall_clearance_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 1, "default": 0.05,
       "description": "an output move that a wall would cut stops this far short of the wall"},
-    "baro_reference_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 5,
-      "description": "the reference pressure (altitude 0, floor 0) is the mean over the first this long of readings"},
-    "baro_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 60, "default": 0.3,
-      "description": "time constant of the altitude low-pass; 0 = none"},
-    "baro_rate_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 60, "default": 0.5,
-      "description": "time constant of the vertical rate's low-pass"},
-    "baro_floor_height_m": {"type": "number", "x-unit": "m", "minimum": 0.5, "maximum": 50, "default": 3.4,
-      "description": "height of one floor where the map gives none (pednav:floor_height_m)"},
-    "baro_floor_hysteresis_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.5,
-      "description": "the floor changes this far past half a floor (less than half a floor)"},
-    "baro_max_gap_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 3600, "default": 2,
-      "description": "a longer gap between readings restarts the altitude filters"}
+    )json" PEDNAV_BAROMETER_PARAMS_SCHEMA(5, 0.3, 0.5, 3.4, 0.5, 2) R"json(
   }
 })json";
 

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <string>
 
+#include <pednav_barometry/params_schema.hpp>
 #include <pednav_barometry/barometric_altimeter.hpp>
 #include <pednav_navmath/angles.hpp>
 #include <pednav_pdr/step_vector.hpp>
@@ -50,18 +51,7 @@ inline constexpr char kCommonParams[] = R"json(
       "description": "standard deviation of a step's length, as a fraction of it (the stride covariance)"},
     "heading_sd_deg": {"type": "number", "x-unit": "deg", "minimum": 0, "maximum": 90, "default": 3,
       "description": "standard deviation of a step's direction (the stride covariance)"},
-    "baro_reference_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 600, "default": 5,
-      "description": "barometer: the reference pressure (altitude 0, floor 0) is the mean over the first this long"},
-    "baro_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 60, "default": 0.3,
-      "description": "barometer: time constant of the altitude low-pass"},
-    "baro_rate_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 60, "default": 1.0,
-      "description": "barometer: time constant of the vertical rate's low-pass"},
-    "baro_floor_height_m": {"type": "number", "x-unit": "m", "minimum": 0.5, "maximum": 20, "default": 3.5,
-      "description": "barometer: height of one floor"},
-    "baro_floor_hysteresis_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.1,
-      "description": "barometer: beyond half a floor by this much before the floor changes"},
-    "baro_max_gap_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 5,
-      "description": "barometer: a longer gap between readings restarts its filters"})json";
+    )json" PEDNAV_BAROMETER_PARAMS_SCHEMA(5, 0.3, 1.0, 3.5, 0.1, 5) R"json()json";
 
 // A schema text: head, the common properties, tail; a constant.
 template <size_t A, size_t B, size_t C>

@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+#include <pednav_barometry/params_schema.hpp>
 #include <pednav_barometry/barometric_altimeter.hpp>
 #include <pednav_geodesy/enu.hpp>
 #include <pednav_navmath/so3.hpp>
@@ -115,18 +116,7 @@ public:
       "description": "a fix that is not good by accuracy and satellites (fused mode) counts with its sd times this"},
     "gnss_timeout_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 3,
       "description": "steps alone this long after the last used fix"},
-    "baro_reference_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 2.0,
-      "description": "barometer: the reference pressure (altitude 0) is the mean over this long"},
-    "baro_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 60, "default": 0.5,
-      "description": "barometer: time constant of the altitude low-pass"},
-    "baro_rate_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 60, "default": 1.0,
-      "description": "barometer: time constant of the vertical rate's low-pass"},
-    "baro_floor_height_m": {"type": "number", "x-unit": "m", "minimum": 0.5, "maximum": 20, "default": 3.4,
-      "description": "barometer: height of one floor"},
-    "baro_floor_hysteresis_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 5, "default": 0.5,
-      "description": "barometer: beyond half a floor by this much before the floor changes"},
-    "baro_max_gap_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 2.0,
-      "description": "barometer: a longer gap between readings restarts the filters"}
+    )json" PEDNAV_BAROMETER_PARAMS_SCHEMA(2.0, 0.5, 1.0, 3.4, 0.5, 2.0) R"json(
   }
 })json";
     static constexpr uint64_t kConsumes = PN_REC_MASK(PN_REC_STEP) | PN_REC_MASK(PN_REC_ATTITUDE) |

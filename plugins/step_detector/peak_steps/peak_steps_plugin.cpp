@@ -3,6 +3,7 @@
 // filtered acceleration norm (pdr::PeakStepDetector): one PN_REC_STEP per
 // step, from peak to peak, and one STATIC step per pause; up or down stairs
 // while the barometer climbs or descends.
+#include <pednav_barometry/params_schema.hpp>
 #include <pednav_barometry/barometric_altimeter.hpp>
 #include <pednav_pdr/peak_step_detector.hpp>
 #include <pednav_sdk/library.hpp>
@@ -42,18 +43,7 @@ public:
       "description": "a step over which the heading (gyro about gravity) turned more than this is TURNING"},
     "stairs_rate_mps": {"type": "number", "x-unit": "m/s", "minimum": 0.01, "maximum": 10, "default": 0.15,
       "description": "a step while the barometric altitude climbs (descends) faster than this is UPSTAIRS (DOWNSTAIRS)"},
-    "baro_reference_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 600, "default": 5,
-      "description": "barometer: the reference pressure is the mean over the first this long"},
-    "baro_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 60, "default": 0.3,
-      "description": "barometer: time constant of the altitude low-pass"},
-    "baro_rate_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 60, "default": 1.0,
-      "description": "barometer: time constant of the vertical rate's low-pass"},
-    "baro_floor_height_m": {"type": "number", "x-unit": "m", "minimum": 0.5, "maximum": 20, "default": 3.5,
-      "description": "barometer: height of one floor"},
-    "baro_floor_hysteresis_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 10, "default": 0.1,
-      "description": "barometer: beyond half a floor by this much before the floor changes"},
-    "baro_max_gap_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 5,
-      "description": "barometer: a longer gap between readings restarts its filters"}
+    )json" PEDNAV_BAROMETER_PARAMS_SCHEMA(5, 0.3, 1.0, 3.5, 0.1, 5) R"json(
   }
 })json";
     static constexpr uint64_t kConsumes = PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_BARO);

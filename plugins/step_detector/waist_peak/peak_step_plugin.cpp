@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 
+#include <pednav_barometry/params_schema.hpp>
 #include <pednav_pdr/vertical_peak_step_detector.hpp>
 #include <pednav_sdk/library.hpp>
 
@@ -46,18 +47,7 @@ public:
       "description": "C3: the altitude change is the altimeter's slope over this span around the step"},
     "turn_rate_min_radps": {"type": "number", "x-unit": "rad/s", "minimum": 0.001, "maximum": 10, "default": 0.3,
       "description": "C4 (eq. 3.5): rate of turn about the vertical over the step and the one before it that makes it turning"},
-    "baro_reference_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 2.0,
-      "description": "barometer: the reference pressure (altitude 0) is the mean over this long"},
-    "baro_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 60, "default": 0.5,
-      "description": "barometer: time constant of the altitude low-pass"},
-    "baro_rate_smoothing_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 60, "default": 1.0,
-      "description": "barometer: time constant of the vertical rate's low-pass"},
-    "baro_floor_height_m": {"type": "number", "x-unit": "m", "minimum": 0.5, "maximum": 20, "default": 3.4,
-      "description": "barometer: height of one floor"},
-    "baro_floor_hysteresis_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 5, "default": 0.5,
-      "description": "barometer: beyond half a floor by this much before the floor changes"},
-    "baro_max_gap_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 2.0,
-      "description": "barometer: a longer gap between readings restarts the filters"}
+    )json" PEDNAV_BAROMETER_PARAMS_SCHEMA(2.0, 0.5, 1.0, 3.4, 0.5, 2.0) R"json(
   }
 })json";
     static constexpr uint64_t kConsumes = PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_BARO);
