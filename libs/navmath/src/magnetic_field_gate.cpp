@@ -35,6 +35,7 @@ void MagneticFieldGate::reset() {
     field_ut_ = c_.field_ut > 0 ? c_.field_ut : std::nan("");
     dip_deg_ = c_.dip_deg;
     learning_ = !learnt();
+    set_dip_bounds();
     started_ = false;
     learn_field_.clear();
     learn_dip_.clear();
@@ -56,25 +57,40 @@ void MagneticFieldGate::finish_learning() {
     }
     if (!(c_.field_ut > 0)) field_ut_ = median(learn_field_);
     if (std::isnan(c_.dip_deg)) dip_deg_ = median(learn_dip_);
+    set_dip_bounds();
     learn_field_.clear();
     learn_dip_.clear();
 }
 
 bool MagneticFieldGate::accept(int64_t t_ns, const Vec3& mag, const Vec3& up) {
-    last_field_ut_ = mag.norm();
-    last_dip_deg_ = dip_of_deg(mag, up);
+    // One square root and no arcsine per reading: the dip test compares sines
+    // (the sine is monotonic over [-90, 90] deg); the dip in degrees is only
+    // computed while learning and when asked for.
+    const double n2 = mag.squaredNorm();
+    last_field_ut_ = std::sqrt(n2);
+    const double scale = std::sqrt(up.squaredNorm()) * last_field_ut_;
+    last_sin_dip_ = scale > 0 ? std::clamp(-mag.dot(up) / scale, -1.0, 1.0) : 0.0;
     if (learning_) {
         if (!started_) started_ = true, t_first_ns_ = t_ns;
         const bool plausible = last_field_ut_ >= kEarthMinUt && last_field_ut_ <= kEarthMaxUt;
         if (plausible && learn_field_.size() < kLearnCapacity) {
             learn_field_.push_back(last_field_ut_);
-            learn_dip_.push_back(last_dip_deg_);
+            learn_dip_.push_back(last_dip_deg());
         }
         if (1e-9 * static_cast<double>(t_ns - t_first_ns_) >= c_.learn_s) finish_learning();
         return plausible;
     }
-    return std::fabs(last_field_ut_ - field_ut_) <= c_.field_tolerance_ut &&
-           std::fabs(last_dip_deg_ - dip_deg_) <= c_.dip_tolerance_deg;
+    return std::fabs(last_field_ut_ - field_ut_) <= c_.field_tolerance_ut && last_sin_dip_ >= sin_dip_min_ &&
+           last_sin_dip_ <= sin_dip_max_;
+}
+
+double MagneticFieldGate::last_dip_deg() const { return std::asin(last_sin_dip_) * 180.0 / M_PI; }
+
+void MagneticFieldGate::set_dip_bounds() {
+    if (!std::isfinite(dip_deg_)) return;
+    const double lo = std::max(-90.0, dip_deg_ - c_.dip_tolerance_deg), hi = std::min(90.0, dip_deg_ + c_.dip_tolerance_deg);
+    sin_dip_min_ = std::sin(lo * M_PI / 180.0);
+    sin_dip_max_ = std::sin(hi * M_PI / 180.0);
 }
 
 }  // namespace pednav::navmath

@@ -61,7 +61,7 @@ public:
     bool learnt() const { return std::isfinite(field_ut_) && std::isfinite(dip_deg_); }
     // The last reading's strength and dip.
     double last_field_ut() const { return last_field_ut_; }
-    double last_dip_deg() const { return last_dip_deg_; }
+    double last_dip_deg() const;
 
     void reset();
 
@@ -70,10 +70,12 @@ public:
 
 private:
     void finish_learning();
+    void set_dip_bounds();
 
     MagneticFieldGateConfig c_;
     double field_ut_, dip_deg_;
-    double last_field_ut_ = 0, last_dip_deg_ = 0;
+    double last_field_ut_ = 0, last_sin_dip_ = 0;
+    double sin_dip_min_ = -1, sin_dip_max_ = 1;  // the accepted dips' sines
     bool learning_ = false;
     bool started_ = false;
     int64_t t_first_ns_ = 0;
