@@ -14,6 +14,10 @@ public final class Position extends Output {
     public static final int FLAG_HAS_VELOCITY = 1;
     /** {@code PN_POSITION_FLAG_HAS_FLOOR}. */
     public static final int FLAG_HAS_FLOOR = 2;
+    /** {@code PN_POSITION_FLAG_HAS_PARTICLES}: {@link #liveParticles()} is set. */
+    public static final int FLAG_HAS_PARTICLES = 4;
+    /** {@code PN_POSITION_FLAG_RECOVERED}: the estimator restarted since its previous output. */
+    public static final int FLAG_RECOVERED = 8;
     /** {@code PN_POSITION_SOURCE_*}. */
     public static final int SOURCE_INERTIAL = 0, SOURCE_FUSED = 1, SOURCE_GNSS = 2, SOURCE_MAP = 3;
 
@@ -23,16 +27,20 @@ public final class Position extends Output {
     private final double headingRad;
     private final int floor;
     private final int source;
+    private final int liveParticles;
+    private final int recoveries;
 
-    /** From the JNI scratch layout (see Engine.poll). */
-    Position(long[] l, double[] d) {
-        super(l[0], (int) l[1], (int) l[2]);
-        posEnuM = Arrays.copyOfRange(d, 0, 3);
-        velEnuMps = Arrays.copyOfRange(d, 3, 6);
-        covEnuM2 = Arrays.copyOfRange(d, 6, 15);
-        headingRad = d[15];
-        floor = (int) l[4];
-        source = (int) l[5];
+    /** From a polled pn_position_t. */
+    Position(RecordLayout.Slot s) {
+        super(s);
+        posEnuM = s.f64s(RecordLayout.POS_POS, 3);
+        velEnuMps = s.f64s(RecordLayout.POS_VEL, 3);
+        covEnuM2 = s.f64s(RecordLayout.POS_COV, 9);
+        headingRad = s.f64(RecordLayout.POS_HEADING);
+        floor = s.i32(RecordLayout.POS_FLOOR);
+        source = s.i32(RecordLayout.POS_SOURCE);
+        liveParticles = s.i32(RecordLayout.POS_PARTICLES);
+        recoveries = s.i32(RecordLayout.POS_RECOVERIES);
     }
 
     /** East, north, up in metres from the start point (a copy). */
@@ -40,14 +48,17 @@ public final class Position extends Output {
         return posEnuM.clone();
     }
 
+    /** East in metres from the start point. */
     public double east() {
         return posEnuM[0];
     }
 
+    /** North in metres from the start point. */
     public double north() {
         return posEnuM[1];
     }
 
+    /** Up in metres from the start point. */
     public double up() {
         return posEnuM[2];
     }
@@ -68,6 +79,7 @@ public final class Position extends Output {
         return velEnuMps.clone();
     }
 
+    /** Whether {@link #velEnuMps()} is set. */
     public boolean hasVelocity() {
         return (flags() & FLAG_HAS_VELOCITY) != 0;
     }
@@ -92,6 +104,16 @@ public final class Position extends Output {
         return source;
     }
 
+    /** Particles alive in a particle filter's estimate; meaningful when {@code FLAG_HAS_PARTICLES} is set. */
+    public int liveParticles() {
+        return liveParticles;
+    }
+
+    /** Times the estimator restarted since the last reset. */
+    public int recoveries() {
+        return recoveries;
+    }
+
     /** Bit-exact equality of every field. */
     @Override
     public boolean equals(Object o) {
@@ -100,7 +122,7 @@ public final class Position extends Output {
         Position p = (Position) o;
         return sameHeader(p) && Arrays.equals(posEnuM, p.posEnuM) && Arrays.equals(velEnuMps, p.velEnuMps)
                 && Arrays.equals(covEnuM2, p.covEnuM2) && same(headingRad, p.headingRad) && floor == p.floor
-                && source == p.source;
+                && source == p.source && liveParticles == p.liveParticles && recoveries == p.recoveries;
     }
 
     @Override

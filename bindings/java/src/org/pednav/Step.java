@@ -10,12 +10,23 @@ public final class Step extends Output {
     private final double accelPeakToPeakMps2;
     private final double frequencyHz;
 
-    /** From the JNI scratch layout (see Engine.poll). */
-    Step(long[] l, double[] d) {
-        super(l[0], (int) l[1], (int) l[2]);
-        tStartNs = l[3];
-        accelPeakToPeakMps2 = d[0];
-        frequencyHz = d[1];
+    /** {@code PN_STEP_MODE_*} values of {@link #motionMode()}. */
+    public static final int MODE_UNKNOWN = 0, MODE_STRAIGHT = 1, MODE_TURNING = 2, MODE_UPSTAIRS = 3,
+            MODE_DOWNSTAIRS = 4, MODE_STATIC = 5;
+
+    private final double accelMaxMps2;
+    private final double accelMinMps2;
+    private final int motionMode;
+
+    /** From a polled pn_step_t. */
+    Step(RecordLayout.Slot s) {
+        super(s);
+        tStartNs = s.i64(RecordLayout.STEP_T_START);
+        accelPeakToPeakMps2 = s.f64(RecordLayout.STEP_P2P);
+        frequencyHz = s.f64(RecordLayout.STEP_FREQ);
+        accelMaxMps2 = s.f64(RecordLayout.STEP_MAX);
+        accelMinMps2 = s.f64(RecordLayout.STEP_MIN);
+        motionMode = s.i32(RecordLayout.STEP_MODE);
     }
 
     /** Start of the step interval (ns). */
@@ -33,6 +44,21 @@ public final class Step extends Output {
         return frequencyHz;
     }
 
+    /** Largest filtered acceleration within the step (m/s^2; 0 from a detector that does not say). */
+    public double accelMaxMps2() {
+        return accelMaxMps2;
+    }
+
+    /** Smallest filtered acceleration within the step (m/s^2). */
+    public double accelMinMps2() {
+        return accelMinMps2;
+    }
+
+    /** One of the MODE_* constants. */
+    public int motionMode() {
+        return motionMode;
+    }
+
     /** Bit-exact equality of every field. */
     @Override
     public boolean equals(Object o) {
@@ -40,7 +66,8 @@ public final class Step extends Output {
         if (!(o instanceof Step)) return false;
         Step s = (Step) o;
         return sameHeader(s) && tStartNs == s.tStartNs && same(accelPeakToPeakMps2, s.accelPeakToPeakMps2)
-                && same(frequencyHz, s.frequencyHz);
+                && same(frequencyHz, s.frequencyHz) && same(accelMaxMps2, s.accelMaxMps2)
+                && same(accelMinMps2, s.accelMinMps2) && motionMode == s.motionMode;
     }
 
     @Override

@@ -20,18 +20,19 @@ public final class Stride extends Output {
     private final int strideClass;
     private final int index;
 
-    /** From the JNI scratch layout (see Engine.poll). */
-    Stride(long[] l, double[] d) {
-        super(l[0], (int) l[1], (int) l[2]);
-        tStartNs = l[3];
-        strideClass = (int) l[5];
-        index = (int) l[6];
-        displacementEnuM = Arrays.copyOfRange(d, 0, 3);
-        lengthM = d[3];
-        headingChangeRad = d[4];
-        covDisplacementM2 = Arrays.copyOfRange(d, 5, 14);
+    /** From a polled pn_stride_t. */
+    Stride(RecordLayout.Slot s) {
+        super(s);
+        tStartNs = s.i64(RecordLayout.STRIDE_T_START);
+        displacementEnuM = s.f64s(RecordLayout.STRIDE_DISP, 3);
+        lengthM = s.f64(RecordLayout.STRIDE_LENGTH);
+        headingChangeRad = s.f64(RecordLayout.STRIDE_DHEADING);
+        covDisplacementM2 = s.f64s(RecordLayout.STRIDE_COV, 9);
+        strideClass = s.i32(RecordLayout.STRIDE_CLASS);
+        index = s.i32(RecordLayout.STRIDE_INDEX);
     }
 
+    /** Start of the step (ns). */
     public long tStartNs() {
         return tStartNs;
     }
