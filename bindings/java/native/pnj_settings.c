@@ -133,43 +133,45 @@ JNIEXPORT jboolean JNICALL Java_org_pednav_Engine_nativeEnuFromGeo(JNIEnv *env, 
 
 /* ------------------------------------------------------ maps and params */
 
-JNIEXPORT void JNICALL Java_org_pednav_Engine_nativeLoadMap(JNIEnv *env, jclass cls, jlong handle,
-                                                            jbyteArray format_utf8, jbyteArray map_bytes) {
+typedef pn_status_t (*text_call_fn)(pn_engine_t *engine, const char *name, const char *bytes, size_t size,
+                                    pn_error_t *err);
+
+/* Calls fn with NUL-terminated copies of `name_utf8` and `bytes` (and the
+ * length of the latter), throwing what it reports. */
+static void call_with_texts(JNIEnv *env, jlong handle, jbyteArray name_utf8, jbyteArray bytes_array,
+                            text_call_fn fn) {
     pn_engine_t *engine = pnj_engine_of(env, handle);
-    char *format, *bytes;
+    char *name, *bytes;
     size_t size = 0;
     pn_error_t err;
-    (void)cls;
     if (!engine) return;
-    format = pnj_copy_bytes(env, format_utf8, NULL);
-    if (!format) return;
-    bytes = pnj_copy_bytes(env, map_bytes, &size);
+    name = pnj_copy_bytes(env, name_utf8, NULL);
+    if (!name) return;
+    bytes = pnj_copy_bytes(env, bytes_array, &size);
     if (bytes) {
         pnj_init_error(&err);
-        pnj_check(env, pn_engine_load_map(engine, format, bytes, size, &err), &err);
+        pnj_check(env, fn(engine, name, bytes, size, &err), &err);
     }
     free(bytes);
-    free(format);
+    free(name);
+}
+
+static pn_status_t load_map(pn_engine_t *engine, const char *format, const char *bytes, size_t size,
+                            pn_error_t *err) {
+    return pn_engine_load_map(engine, format, bytes, size, err);
+}
+
+JNIEXPORT void JNICALL Java_org_pednav_Engine_nativeLoadMap(JNIEnv *env, jclass cls, jlong handle,
+                                                            jbyteArray format_utf8, jbyteArray map_bytes) {
+    (void)cls;
+    call_with_texts(env, handle, format_utf8, map_bytes, load_map);
 }
 
 JNIEXPORT void JNICALL Java_org_pednav_Engine_nativeReconfigure(JNIEnv *env, jclass cls, jlong handle,
                                                                 jbyteArray stage_utf8,
                                                                 jbyteArray params_utf8) {
-    pn_engine_t *engine = pnj_engine_of(env, handle);
-    char *stage, *params;
-    size_t len = 0;
-    pn_error_t err;
     (void)cls;
-    if (!engine) return;
-    stage = pnj_copy_bytes(env, stage_utf8, NULL);
-    if (!stage) return;
-    params = pnj_copy_bytes(env, params_utf8, &len);
-    if (params) {
-        pnj_init_error(&err);
-        pnj_check(env, pn_engine_reconfigure(engine, stage, params, len, &err), &err);
-    }
-    free(params);
-    free(stage);
+    call_with_texts(env, handle, stage_utf8, params_utf8, pn_engine_reconfigure);
 }
 
 JNIEXPORT void JNICALL Java_org_pednav_Engine_nativeSetOutputMask(JNIEnv *env, jclass cls, jlong handle,

@@ -345,12 +345,13 @@ public final class Engine implements AutoCloseable {
                     pollBuffer = ByteBuffer.allocateDirect(POLL_SLOTS * RecordLayout.SLOT_BYTES + 8).alignedSlice(8)
                             .order(ByteOrder.nativeOrder());
                 while (out.size() < maxRecords) {
-                    int n = nativePollMany(live(), pollBuffer, Math.min(POLL_SLOTS, maxRecords - out.size()));
+                    int want = Math.min(POLL_SLOTS, maxRecords - out.size());
+                    int n = nativePollMany(live(), pollBuffer, want);
                     for (int i = 0; i < n; ++i) {
                         Output o = new RecordLayout.Slot(pollBuffer, i * RecordLayout.SLOT_BYTES).decode();
                         if (o != null) out.add(o); // a type newer than this binding: skipped
                     }
-                    if (n == 0) break;
+                    if (n < want) break; // the queue is empty
                 }
             }
         } finally {
