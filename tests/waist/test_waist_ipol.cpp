@@ -49,7 +49,7 @@ TEST_CASE("issue 14: ipol lower back: steps against the annotated footsteps of b
         CAPTURE(r.steps);
         CAPTURE(r.footsteps);
         CAPTURE(r.uturn_deg);
-        CHECK(d <= 3);
+        CHECK(d <= 2);
         CHECK(std::abs(r.uturn_deg - 180.0) < 10.0);
         within_one += d <= 1;
         sum_abs += d;
@@ -61,8 +61,12 @@ TEST_CASE("issue 14: ipol lower back: steps against the annotated footsteps of b
                                 << ", mean |difference| " << sum_abs / trials << ", worst " << worst
                                 << "; U-turn worst |error| " << uturn_worst << " deg");
     CHECK(trials == 20);
-    CHECK(within_one >= 16);
-    CHECK(sum_abs / trials < 1.0);
+    // The issue asks for every trial within one; measured 17 of 20, mean
+    // 0.65, worst 2: the misses are a U-turn's pivot steps (the pelvis rises
+    // on a foot that turns on the spot, which the annotation does not count)
+    // and the stop's slowing steps (no vertical bounce).
+    CHECK(within_one >= 17);
+    CHECK(sum_abs / trials < 0.7);
 }
 
 TEST_CASE("issue 14: ipol lower back: 10 m legs within 5 % of the foot pipeline's, constants leave one subject out") {
@@ -88,7 +92,7 @@ TEST_CASE("issue 14: ipol lower back: 10 m legs within 5 % of the foot pipeline'
                                 << 100 * mean_rel << " %, median " << 100 * median(rel) << " %, worst "
                                 << 100 * *std::max_element(rel.begin(), rel.end()) << " %; within 5 %: "
                                 << within_5pct << "; mean leg " << mean_leg << " m (protocol 10 m)");
-    // The issue asks for every leg within 5 %; measured: 23 of 40 legs, mean
+    // The issue asks for every leg within 5 %; measured: 22 of 40 legs, mean
     // 5.3 %, worst 13 % (README, docs/waist-pipeline.md): the peak-to-peak
     // explains too little of the subjects' differences in step length
     // (fitting the root and the offset too does not help: mean 5.9 %).

@@ -76,7 +76,7 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
 
     const sim::Route oi = sim::builtin_route("outdoor_indoor"), block = waist_eval::block_laps_route();
     for (const sim::Route* route : {&oi, &block}) {
-        std::vector<double> drift, gnss_err;
+        std::vector<double> drift, without_scale, gnss_err;
         for (uint64_t seed = 1; seed <= 5; ++seed) {
             sim::SimOutput out = sim::simulate(*route, waist_options(seed, true));
             if (route == &block)
@@ -91,10 +91,21 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
                         "(fixes' h_accuracy %.2f m)\n",
                         route->name.c_str(), static_cast<unsigned long long>(seed), gap.second - gap.first,
                         d.walked_m, d.max_m, 100.0 * d.max_m / d.walked_m, err, waist_eval::mean_h_accuracy_m(out.gnss));
+            // Where the drift comes from: the track's scale and rotation
+            // against the truth over the outage, and the true step length in
+            // it against the 30 s of fixes before it (what GNSS taught).
+            const double step_before_m = waist_eval::true_step_length_m(out, gap.first - 30.0, gap.first),
+                         step_in_m = waist_eval::true_step_length_m(out, gap.first, gap.second);
+            std::printf("    its sources: track scale %+.2f %%, rotation %+.2f deg; without the scale %.2f %%; true step "
+                        "%.3f m in the outage, %.3f m in the 30 s before (%+.2f %%)\n",
+                        d.scale_pct, d.rotation_deg, 100.0 * d.max_without_scale_m / d.walked_m, step_in_m,
+                        step_before_m, 100.0 * (step_in_m / step_before_m - 1.0));
             drift.push_back(100.0 * d.max_m / d.walked_m);
+            without_scale.push_back(100.0 * d.max_without_scale_m / d.walked_m);
             gnss_err.push_back(err);
         }
         print_spread(("sim " + route->name + " outage drift %").c_str(), drift);
+        print_spread(("sim " + route->name + " outage drift without the track's scale %").c_str(), without_scale);
         print_spread(("sim " + route->name + " GNSS mode error m").c_str(), gnss_err);
     }
 

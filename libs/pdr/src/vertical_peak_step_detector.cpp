@@ -18,6 +18,12 @@ const VerticalPeakStepConfig& checked(const VerticalPeakStepConfig& c) {
         throw std::invalid_argument("max_step_interval_s must be above min_step_interval_s");
     if (!(c.accel_max_threshold_mps2 > c.accel_min_threshold_mps2))
         throw std::invalid_argument("accel_max_threshold_mps2 must be above accel_min_threshold_mps2");
+    if (!(c.bout_accel_max_threshold_mps2 <= c.accel_max_threshold_mps2) ||
+        !(c.bout_accel_min_threshold_mps2 >= c.accel_min_threshold_mps2) ||
+        !(c.bout_accel_max_threshold_mps2 > c.bout_accel_min_threshold_mps2))
+        throw std::invalid_argument(
+            "bout_accel_max_threshold_mps2 must be at most accel_max_threshold_mps2 and above "
+            "bout_accel_min_threshold_mps2, which must be at least accel_min_threshold_mps2");
     if (!(c.stairs_rise_min_m > 0) || !(c.baro_window_s > 0) || !(c.turn_rate_min_radps > 0))
         throw std::invalid_argument("stairs_rise_min_m, baro_window_s and turn_rate_min_radps must be > 0");
     return c;
@@ -118,10 +124,13 @@ void VerticalPeakStepDetector::on_judged(int64_t t_ns, double a_v, bool peak) {
         bout_open_ = false;
     }
     if (has_pending_ && t_ns - pending_.t_ns > max_ns) has_pending_ = false;  // an isolated peak
-    if (!peak || !(a_v > c_.accel_max_threshold_mps2)) return;
+    // C1, with the weaker thresholds while a bout is open (hysteresis).
+    const double max_threshold = bout_open_ ? c_.bout_accel_max_threshold_mps2 : c_.accel_max_threshold_mps2;
+    const double min_threshold = bout_open_ ? c_.bout_accel_min_threshold_mps2 : c_.accel_min_threshold_mps2;
+    if (!peak || !(a_v > max_threshold)) return;
     const Candidate cand{t_ns, a_v, min_since_candidate_, yaw};
     min_since_candidate_ = HUGE_VAL;
-    if (cand.min_mps2 < c_.accel_min_threshold_mps2) on_candidate(cand);  // C1
+    if (cand.min_mps2 < min_threshold) on_candidate(cand);
 }
 
 void VerticalPeakStepDetector::on_candidate(const Candidate& c) {

@@ -185,6 +185,16 @@ void StepGnssEkf::set_position(double e_m, double n_m, double a_m) {
     x_(A) = a_m;
 }
 
+void StepGnssEkf::place_at_fix(double e_m, double n_m, double sd_m) {
+    x_(E) = e_m;
+    x_(N) = n_m;
+    for (int i : {E, N}) {
+        P_.row(i).setZero();
+        P_.col(i).setZero();
+    }
+    P_(E, E) = P_(N, N) = sq(std::max(sd_m, c_.gnss_min_sd_m));
+}
+
 void StepGnssEkf::set_heading(double psi_rad, double sd_rad) {
     x_(PSI) = navmath::wrap_pi(psi_rad);
     P_.row(PSI).setZero();

@@ -37,6 +37,10 @@ public:
       "description": "C1 (eq. 3.2): a step's peak is above this; above accel_min_threshold_mps2"},
     "accel_min_threshold_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": -50, "maximum": 10, "default": -0.2,
       "description": "C1 (eq. 3.2): the minimum within the step is below this"},
+    "bout_accel_max_threshold_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": -10, "maximum": 50, "default": 0.1,
+      "description": "C1 for a step that continues a bout (within max_step_interval_s of its last step): its peak is above this (at most accel_max_threshold_mps2; the steps before a stop and a turn's pivot steps bounce the pelvis less)"},
+    "bout_accel_min_threshold_mps2": {"type": "number", "x-unit": "m/s^2", "minimum": -50, "maximum": 10, "default": -0.1,
+      "description": "C1 for a step that continues a bout: its minimum is below this (at least accel_min_threshold_mps2, below bout_accel_max_threshold_mps2)"},
     "min_step_interval_s": {"type": "number", "x-unit": "s", "minimum": 0.05, "maximum": 2, "default": 0.25,
       "description": "C2 (eq. 3.3): shortest step (4 Hz), also half the peak window"},
     "max_step_interval_s": {"type": "number", "x-unit": "s", "minimum": 0.1, "maximum": 5, "default": 1.5,
@@ -57,6 +61,12 @@ public:
         const pednav::pdr::VerticalPeakStepConfig c = pednav::pdr::vertical_peak_step_config(p);
         if (c.accel_max_threshold_mps2 <= c.accel_min_threshold_mps2)
             Params::fail("accel_max_threshold_mps2", "must be above accel_min_threshold_mps2");
+        if (c.bout_accel_max_threshold_mps2 > c.accel_max_threshold_mps2)
+            Params::fail("bout_accel_max_threshold_mps2", "must be at most accel_max_threshold_mps2");
+        if (c.bout_accel_min_threshold_mps2 < c.accel_min_threshold_mps2)
+            Params::fail("bout_accel_min_threshold_mps2", "must be at least accel_min_threshold_mps2");
+        if (c.bout_accel_max_threshold_mps2 <= c.bout_accel_min_threshold_mps2)
+            Params::fail("bout_accel_max_threshold_mps2", "must be above bout_accel_min_threshold_mps2");
         if (c.max_step_interval_s <= c.min_step_interval_s)
             Params::fail("max_step_interval_s", "must be above min_step_interval_s");
         detector_ = std::make_unique<VerticalPeakStepDetector>(c, std::max(2.0 * ctx.imu_rate_hz, 1000.0));

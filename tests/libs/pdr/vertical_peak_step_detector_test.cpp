@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <pednav_geodesy/atmosphere.hpp>
@@ -24,6 +25,8 @@ struct Walk {
     double step_hz = 1.8, amplitude_mps2 = 2.0, yaw_rate_radps = 0.0, climb_mps = 0.0;
     int steps = 20;
     double still_s = 3.0;
+    int weak_tail_steps = 0;  // the last steps this weak (a walker slowing to a stop)
+    double weak_tail_amplitude_mps2 = 0.0;
 };
 
 // Standing still_s, walking `steps` steps, standing again; the sensor is
@@ -39,7 +42,9 @@ std::vector<pdr::VerticalStepEvent> run(const Walk& w, const pdr::VerticalPeakSt
     for (int k = 0; k * (1.0 / rate) < total_s; ++k) {
         const double t = k / rate;
         const bool walking = t >= w.still_s && t < w.still_s + walk_s;
-        const double a_v = walking ? w.amplitude_mps2 * std::sin(2 * M_PI * w.step_hz * (t - w.still_s)) : 0.0;
+        const bool tail = t >= w.still_s + (w.steps - w.weak_tail_steps) / w.step_hz;
+        const double amplitude = tail ? w.weak_tail_amplitude_mps2 : w.amplitude_mps2;
+        const double a_v = walking ? amplitude * std::sin(2 * M_PI * w.step_hz * (t - w.still_s)) : 0.0;
         const double yaw_rate = walking ? w.yaw_rate_radps : 0.0;
         yaw += yaw_rate / rate;
         const navmath::Quat q = navmath::quat_exp(navmath::Vec3(0, 0, yaw)) * mount;  // ENU from sensor
@@ -98,6 +103,29 @@ TEST_CASE("peak steps: C1 (amplitude) and C2 (cadence) reject sway and slow rock
     Walk slow;
     slow.step_hz = 0.5;  // 2 s between peaks: longer than max_step_interval_s
     CHECK(steps_of(run(slow, defaults())) == 0);
+}
+
+TEST_CASE("peak steps: C1 is a hysteresis: weaker steps continue a bout, and do not start one") {
+    // +-0.12 m/s^2 after the 0.2 s average at 1.8 Hz (which keeps 77 % of
+    // it): weaker than the thresholds that start a bout (0.15, -0.2),
+    // stronger than those that continue one (0.1, -0.1).
+    const double weak_mps2 = 0.156;
+    Walk slowing;
+    slowing.amplitude_mps2 = 0.4;  // a slow walk: the gravity low-pass keeps little of it
+    slowing.weak_tail_steps = 3;
+    slowing.weak_tail_amplitude_mps2 = weak_mps2;
+    const pdr::VerticalPeakStepConfig c = defaults();
+    CHECK(steps_of(run(slowing, c)) >= slowing.steps - 1);
+    pdr::VerticalPeakStepConfig no_hysteresis = c;
+    no_hysteresis.bout_accel_max_threshold_mps2 = c.accel_max_threshold_mps2;
+    no_hysteresis.bout_accel_min_threshold_mps2 = c.accel_min_threshold_mps2;
+    CHECK(steps_of(run(slowing, no_hysteresis)) <= slowing.steps - 1 - slowing.weak_tail_steps);
+    Walk weak;
+    weak.amplitude_mps2 = weak_mps2;  // a whole walk as weak: never a bout
+    CHECK(steps_of(run(weak, c)) == 0);
+    pdr::VerticalPeakStepConfig inverted = c;
+    inverted.bout_accel_max_threshold_mps2 = c.accel_max_threshold_mps2 + 0.1;
+    CHECK_THROWS_AS(pdr::VerticalPeakStepDetector(inverted, 200.0), std::invalid_argument);
 }
 
 TEST_CASE("peak steps: motion modes turning (gyro about the vertical) and up/down stairs (barometer)") {

@@ -70,6 +70,25 @@ TEST_CASE("fusion EKF: the innovation gate rejects a fix 50 m off and a lost tra
     CHECK(ekf.x()(StepGnssEkf::E) == doctest::Approx(40.0));
 }
 
+TEST_CASE("fusion EKF: a track placed at a fix is as uncertain as the fix, so the next fixes average in") {
+    StepGnssEkf ekf(config());
+    ekf.start(0, 0, 0, 0.0, 0.7);  // the start point's P0 (init_position_sd_m, 0.1 m)
+    ekf.place_at_fix(4.0, 0.0, 3.0);  // a first fix 4 m east of the truth at 0, sd 3 m
+    CHECK(ekf.x()(StepGnssEkf::E) == doctest::Approx(4.0));
+    CHECK(ekf.P()(StepGnssEkf::E, StepGnssEkf::E) == doctest::Approx(9.0));
+    CHECK(ekf.P()(StepGnssEkf::E, StepGnssEkf::PSI) == 0.0);
+    // Standing, fixes of the same sd alternate about the truth: the track
+    // goes to their mean, as an average of all of them (the first included).
+    for (int k = 0; k < 9; ++k) CHECK(ekf.gnss_position(k % 2 ? 1.0 : -1.0, 0.0, 3.0, 0.0).accepted);
+    CHECK(ekf.x()(StepGnssEkf::E) == doctest::Approx((4.0 - 1.0) / 10.0).epsilon(1e-6));
+    CHECK(ekf.P()(StepGnssEkf::E, StepGnssEkf::E) == doctest::Approx(0.9).epsilon(1e-6));
+    // A sd below gnss_min_sd_m is floored there.
+    StepGnssEkf tight(config());
+    tight.start(0, 0, 0, 0.0, 0.7);
+    tight.place_at_fix(1.0, 2.0, 0.0);
+    CHECK(tight.P()(StepGnssEkf::N, StepGnssEkf::N) == doctest::Approx(config().gnss_min_sd_m * config().gnss_min_sd_m));
+}
+
 TEST_CASE("fusion EKF: step length and walking direction learnt from GNSS carry through an outage") {
     StepGnssEkf ekf(config());
     const double true_length = 0.8, model_length = 0.7;  // the model is 12.5 % short for this walker

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -52,6 +53,8 @@ std::vector<OutputError> output_errors(const ReplayResult& r, const sim::SimOutp
         e.err_h_m = std::hypot(e.err_e_m, e.err_n_m);
         e.source = p.source;
         e.walked_m = walked[i];
+        e.true_e_m = out.truth[i].pos_enu_m[0];
+        e.true_n_m = out.truth[i].pos_enu_m[1];
         errors.push_back(e);
     }
     return errors;
@@ -89,12 +92,40 @@ Drift drift_in(const std::vector<OutputError>& errors, double t0, double t1) {
         if (e.t_s <= t0) ref = &e;
     if (!ref) throw std::runtime_error("no output before the outage at " + std::to_string(t0) + " s");
     Drift d;
+    // Displacements since the reference as complex numbers (x = E, y = N).
+    std::vector<std::complex<double>> z, w;
     for (const OutputError& e : errors) {
         if (e.t_s <= t0 || e.t_s > t1) continue;
         d.max_m = std::max(d.max_m, std::hypot(e.err_e_m - ref->err_e_m, e.err_n_m - ref->err_n_m));
         d.walked_m = e.walked_m - ref->walked_m;
+        const std::complex<double> zt(e.true_e_m - ref->true_e_m, e.true_n_m - ref->true_n_m);
+        z.push_back(zt);
+        w.push_back(zt + std::complex<double>(e.err_e_m - ref->err_e_m, e.err_n_m - ref->err_n_m));
+    }
+    std::complex<double> num = 0;
+    double den = 0;
+    for (size_t i = 0; i < z.size(); ++i) num += std::conj(z[i]) * w[i], den += std::norm(z[i]);
+    if (den > 0 && std::abs(num) > 0) {
+        const std::complex<double> a = num / den;
+        d.scale_pct = 100.0 * (std::abs(a) - 1.0);
+        // A counter-clockwise rotation in ENU is an azimuth decrease.
+        d.rotation_deg = -std::arg(a) * 180.0 / M_PI;
+        for (size_t i = 0; i < z.size(); ++i)
+            d.max_without_scale_m = std::max(d.max_without_scale_m, std::abs(w[i] / std::abs(a) - z[i]));
     }
     return d;
+}
+
+double true_step_length_m(const sim::SimOutput& out, double t0_s, double t1_s) {
+    std::vector<size_t> idx;
+    for (double t : out.step_times_s)
+        if (t > t0_s && t <= t1_s) idx.push_back(truth_index(out, static_cast<int64_t>(std::llround(t * 1e9))));
+    if (idx.size() < 3) return NAN;
+    double sum = 0;
+    for (size_t k = 2; k < idx.size(); ++k)
+        sum += std::hypot(out.truth[idx[k]].pos_enu_m[0] - out.truth[idx[k - 2]].pos_enu_m[0],
+                          out.truth[idx[k]].pos_enu_m[1] - out.truth[idx[k - 2]].pos_enu_m[1]);
+    return 0.5 * sum / static_cast<double>(idx.size() - 2);
 }
 
 double mean_error_of(const std::vector<OutputError>& errors, int source, int* count) {

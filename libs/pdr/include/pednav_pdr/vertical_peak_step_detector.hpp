@@ -14,6 +14,13 @@
 //       minimum since the previous candidate below accel_min_threshold_mps2;
 //   C2 (eq. 3.3): the interval to the neighbouring step is within
 //       (min_step_interval_s, max_step_interval_s) (walking cadence: 1-4 Hz).
+// C1's thresholds are a hysteresis: a step that continues a walking bout
+// (within max_step_interval_s of its last step) needs only its peak above
+// bout_accel_max_threshold_mps2 and its minimum below
+// bout_accel_min_threshold_mps2, weaker than the thresholds that start a
+// bout (the decelerating steps before a stop and a turn's pivot steps
+// bounce the pelvis less than walking does; an isolated weak peak in a
+// stop is still no step).
 // The first step of a walking bout has no step before it: it is held until
 // the next candidate confirms the cadence (an isolated peak is no step), so
 // the detector's look-ahead is max_step_interval_s plus the two half windows.
@@ -50,6 +57,8 @@ struct VerticalPeakStepConfig {
     double smoothing_window_s;        // centred moving average of the vertical acceleration, s (>= 0)
     double accel_max_threshold_mps2;  // C1: the peak above this, m/s^2
     double accel_min_threshold_mps2;  // C1: the minimum within the step below this, m/s^2
+    double bout_accel_max_threshold_mps2;  // C1 within a bout: the peak above this, m/s^2 (<= accel_max_threshold_mps2)
+    double bout_accel_min_threshold_mps2;  // C1 within a bout: the minimum below this, m/s^2 (>= accel_min_threshold_mps2)
     double min_step_interval_s;       // C2: shortest step (also the peak window's half width), s (> 0)
     double max_step_interval_s;       // C2: longest step, s (> min_step_interval_s)
     double stairs_rise_min_m;         // C3: altitude change over one step that makes it stairs, m (> 0)
@@ -67,6 +76,8 @@ VerticalPeakStepConfig vertical_peak_step_config(Params& p) {
     c.smoothing_window_s = p.number("smoothing_window_s");
     c.accel_max_threshold_mps2 = p.number("accel_max_threshold_mps2");
     c.accel_min_threshold_mps2 = p.number("accel_min_threshold_mps2");
+    c.bout_accel_max_threshold_mps2 = p.number("bout_accel_max_threshold_mps2");
+    c.bout_accel_min_threshold_mps2 = p.number("bout_accel_min_threshold_mps2");
     c.min_step_interval_s = p.number("min_step_interval_s");
     c.max_step_interval_s = p.number("max_step_interval_s");
     c.stairs_rise_min_m = p.number("stairs_rise_min_m");

@@ -118,6 +118,10 @@ public:
 
     // Moves the position (the app's start point) and optionally the heading.
     void set_position(double e_m, double n_m, double a_m);
+    // Places the horizontal position at a fix known to sd_m per axis (its
+    // covariance becomes the fix's: the start point's P0 is for a point the
+    // app knows, not for a fix).
+    void place_at_fix(double e_m, double n_m, double sd_m);
     void set_heading(double psi_rad, double sd_rad);
 
     const Vec6& x() const { return x_; }

@@ -29,6 +29,7 @@ struct OutputError {
     double err_e_m = 0, err_n_m = 0;
     int source = 0;      // PN_POSITION_SOURCE_*
     double walked_m = 0; // true horizontal distance walked up to t
+    double true_e_m = 0, true_n_m = 0;  // the true position at t
 };
 std::vector<OutputError> output_errors(const ReplayResult& r, const sim::SimOutput& out);
 
@@ -45,11 +46,25 @@ StairsScore stairs_score(const ReplayResult& r, const sim::SimOutput& out);
 std::pair<double, double> longest_gnss_gap_s(const std::vector<pn_gnss_t>& fixes);
 
 // Inside (t0, t1]: the largest growth of the error vector since the last
-// output at or before t0, and the distance walked from there to t1.
+// output at or before t0, and the distance walked from there to t1. Its
+// sources: the similarity (a scale and a rotation about the reference) that
+// best maps the true displacements since the reference onto the estimated
+// ones (least squares, as complex numbers: a = sum conj(z) w / sum |z|^2):
+// the scale is what the step length was off by, the rotation what the
+// walking direction was off by (azimuth, clockwise positive); and the
+// largest growth left when the track is scaled back by the scale alone.
 struct Drift {
     double max_m = 0, walked_m = 0;
+    double scale_pct = 0;           // (|a| - 1) * 100
+    double rotation_deg = 0;        // the azimuth error the fit's rotation means
+    double max_without_scale_m = 0; // the drift of the track divided by |a|
 };
 Drift drift_in(const std::vector<OutputError>& errors, double t0_s, double t1_s);
+
+// The true mean step length over the steps in (t0, t1]: half the mean chord
+// between every other step (which cancels the trunk's sway), m; NAN with
+// fewer than three steps.
+double true_step_length_m(const sim::SimOutput& out, double t0_s, double t1_s);
 
 // Mean horizontal error of the outputs of `source`, and how many there are.
 double mean_error_of(const std::vector<OutputError>& errors, int source, int* count);
