@@ -45,6 +45,16 @@ std::string describe_status(int status) {
     return text;
 }
 
+// Kills a child that is past its deadline and says so.
+std::string kill_timed_out(pid_t pid, double timeout_s) {
+    int status = 0;
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+    char msg[80];
+    std::snprintf(msg, sizeof msg, "timed out after %g s (killed)", timeout_s);
+    return msg;
+}
+
 }  // namespace
 
 IsolatedResult run_isolated(const std::function<nlohmann::json()>& body, double timeout_s) {
@@ -95,11 +105,7 @@ IsolatedResult run_isolated(const std::function<nlohmann::json()>& body, double 
     close(fds[0]);
     int status = 0;
     if (timed_out) {
-        kill(pid, SIGKILL);
-        waitpid(pid, &status, 0);
-        char msg[80];
-        std::snprintf(msg, sizeof msg, "timed out after %g s (killed)", timeout_s);
-        r.failure = msg;
+        r.failure = kill_timed_out(pid, timeout_s);
         return r;
     }
     // The pipe closed; the child exits at once after closing it, but one
@@ -109,11 +115,7 @@ IsolatedResult run_isolated(const std::function<nlohmann::json()>& body, double 
         if (w == pid) break;
         if (w < 0 && errno != EINTR) break;
         if (now_s() > deadline) {
-            kill(pid, SIGKILL);
-            waitpid(pid, &status, 0);
-            char msg[80];
-            std::snprintf(msg, sizeof msg, "timed out after %g s (killed)", timeout_s);
-            r.failure = msg;
+            r.failure = kill_timed_out(pid, timeout_s);
             return r;
         }
         usleep(2000);

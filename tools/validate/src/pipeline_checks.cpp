@@ -22,15 +22,22 @@ std::string difference_text(const std::vector<OutputBytes>& a, const std::vector
            " outputs the second time)";
 }
 
+// Runs the walk, resets, runs it again; empty on success, else what failed.
+std::string run_reset_run(EngineRun& e, const Placement& p, std::vector<OutputBytes>& first,
+                          std::vector<OutputBytes>& second) {
+    std::string problem = e.run(*p.records, first);
+    if (problem.empty()) problem = e.reset();
+    if (problem.empty()) problem = e.run(*p.records, second);
+    return problem;
+}
+
 }  // namespace
 
 nlohmann::json lifecycle_check(const Placement& p) {
     EngineRun e(p.config, p.plugin_dirs);
     if (!e.created()) return check_result(false, "create failed: " + e.error_text());
     std::vector<OutputBytes> first, second;
-    std::string problem = e.run(*p.records, first);
-    if (problem.empty()) problem = e.reset();
-    if (problem.empty()) problem = e.run(*p.records, second);
+    const std::string problem = run_reset_run(e, p, first, second);
     e.destroy();
     nlohmann::json detail = {{"outputs", first.size()}, {"outputs_after_reset", second.size()}};
     return check_result(problem.empty(), problem, detail);
@@ -56,9 +63,7 @@ nlohmann::json reset_check(const Placement& p) {
     EngineRun e(p.config, p.plugin_dirs);
     if (!e.created()) return check_result(false, "create failed: " + e.error_text());
     std::vector<OutputBytes> first, again;
-    std::string problem = e.run(*p.records, first);
-    if (problem.empty()) problem = e.reset();
-    if (problem.empty()) problem = e.run(*p.records, again);
+    const std::string problem = run_reset_run(e, p, first, again);
     if (!problem.empty()) return check_result(false, problem);
     const long d = first_difference(first, again);
     return check_result(d < 0, "after reset, " + difference_text(first, again, d), {{"outputs", first.size()}});
