@@ -17,20 +17,9 @@
 #    unfindable (CMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON) and runs it;
 # 7. runs the installed CLI: it finds the installed plugins and presets;
 # 8. checks that no test fixture plugin was installed.
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    string(REPLACE ";" " " cmd "${ARGN}")
-    message(FATAL_ERROR "failed (${rc}): ${cmd}\n${out}\n${err}")
-  endif()
-  set(run_out "${out}" PARENT_SCOPE)
-endfunction()
-
+include("${CMAKE_CURRENT_LIST_DIR}/package_common.cmake")
 set(prefix "${WORK_DIR}/prefix")
-file(REMOVE_RECURSE "${WORK_DIR}")
-file(MAKE_DIRECTORY "${WORK_DIR}")
-
-run("${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${prefix}")
+install_into_prefix("${BUILD_DIR}" "${WORK_DIR}" "${prefix}")
 set(cmake_dir "${prefix}/${INSTALL_LIBDIR}/cmake/pednav")
 file(GLOB c_targets "${cmake_dir}/pednavTargets*.cmake")
 foreach(f IN LISTS c_targets)

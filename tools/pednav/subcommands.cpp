@@ -10,6 +10,7 @@
 #include "cmd_report.hpp"
 #include "cmd_run.hpp"
 #include "cmd_sim.hpp"
+#include "cmd_validate.hpp"
 
 const std::vector<PednavSubcommand>& pednav_subcommands() {
     static const std::vector<PednavSubcommand> table = {
@@ -25,6 +26,8 @@ const std::vector<PednavSubcommand>& pednav_subcommands() {
          "accuracy of every recording and simulated walk"},
         {"calibrate", &pednav_cmd_calibrate, pednav_cmd_calibrate_usage,
          "fit a step position filter's constants to walks of known length"},
+        {"validate", &pednav_cmd_validate, pednav_cmd_validate_usage,
+         "the conformance checks every plugin library must pass"},
     };
     return table;
 }
