@@ -30,9 +30,29 @@ void check_keys(const nlohmann::json& obj, const std::string& where,
     }
 }
 
+// "on_failure", "call_budget_ms", "over_budget" of a stage.
+void parse_failure_policy(const nlohmann::json& j, const std::string& where, StageConfig& s) {
+    if (auto f = j.find("on_failure"); f != j.end()) {
+        if (!f->is_string() || (*f != "reset" && *f != "stop"))
+            fail(where + "/on_failure", "\"on_failure\" must be \"reset\" or \"stop\"");
+        s.on_failure = *f == "stop" ? OnFailure::stop : OnFailure::reset;
+    }
+    if (auto b = j.find("call_budget_ms"); b != j.end()) {
+        if (!b->is_number() || !(b->get<double>() >= 0.0 && b->get<double>() <= 60000.0))
+            fail(where + "/call_budget_ms", "\"call_budget_ms\" must be a number of milliseconds in [0, 60000]");
+        s.call_budget_ms = b->get<double>();
+    }
+    if (auto o = j.find("over_budget"); o != j.end()) {
+        if (!o->is_string() || (*o != "warn" && *o != "stop"))
+            fail(where + "/over_budget", "\"over_budget\" must be \"warn\" or \"stop\"");
+        if (!j.contains("call_budget_ms")) fail(where, "\"over_budget\" needs \"call_budget_ms\"");
+        s.over_budget = *o == "stop" ? OverBudget::stop : OverBudget::warn;
+    }
+}
+
 StageConfig parse_stage(const nlohmann::json& j, Role role, const std::string& where) {
     if (!j.is_object()) fail(where, std::string(role_name(role)) + " must be an object with \"plugin\" and \"params\"");
-    check_keys(j, where, {"plugin", "params"});
+    check_keys(j, where, {"plugin", "params", "on_failure", "call_budget_ms", "over_budget"});
     auto p = j.find("plugin");
     if (p == j.end() || !p->is_string() || p->get<std::string>().empty())
         fail(where + "/plugin", "\"plugin\" must name a plugin id");
@@ -42,6 +62,7 @@ StageConfig parse_stage(const nlohmann::json& j, Role role, const std::string& w
         if (!params->is_object()) fail(where + "/params", "\"params\" must be an object");
         s.params_json = params->dump();
     }
+    parse_failure_policy(j, where, s);
     return s;
 }
 

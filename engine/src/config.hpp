@@ -16,11 +16,21 @@ enum class Role { step_detector = 0, attitude_estimator, position_filter, map_ma
 constexpr int kRoleCount = 4;
 const char* role_name(Role role);
 
+// What the engine does when a stage fails (docs/config.md, "Plugin failures").
+enum class OnFailure {
+    reset,  // a failure that leaves the instance suspect (PN_E_NUMERIC, PN_E_INTERNAL) resets it; the pipeline goes on
+    stop,   // the first failure stops the pipeline until pn_engine_reset
+};
+enum class OverBudget { warn, stop };
+
 struct StageConfig {
     Role role;
     std::string plugin_id;
     std::string params_json;  // compact JSON object
     std::string pointer;      // "/pipelines/foot/step_detector"
+    OnFailure on_failure = OnFailure::reset;
+    double call_budget_ms = 0.0;  // wall time one call may take; 0 = no budget
+    OverBudget over_budget = OverBudget::warn;
 };
 
 struct EngineConfig {

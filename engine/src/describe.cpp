@@ -95,7 +95,14 @@ std::string Engine::describe_json() const {
                           {"records_in", s->records_in},
                           {"records_out", s->records_out},
                           {"failures", s->failures},
-                          {"resets", s->resets}});
+                          {"resets", s->resets},
+                          {"on_failure", s->on_failure == OnFailure::stop ? "stop" : "reset"}});
+        if (s->call_budget_ns) {
+            stages.back()["call_budget_ms"] = static_cast<double>(s->call_budget_ns) * 1e-6;
+            stages.back()["over_budget"] = s->over_budget == OverBudget::stop ? "stop" : "warn";
+            stages.back()["calls_over_budget"] = s->calls_over_budget;
+            stages.back()["slowest_call_ms"] = static_cast<double>(s->slowest_call_ns) * 1e-6;
+        }
         for (const auto& in : s->feedback) {
             const auto& from = scheduler_->stages()[in.queue - 1];
             feedback.push_back({{"from", from->instance_name}, {"to", s->instance_name}, {"types", type_names(in.mask)}});
@@ -105,7 +112,11 @@ std::string Engine::describe_json() const {
                      {"imu_rate_hz", config_.imu_rate_hz},
                      {"latency_ns", scheduler_->latency_ns()},
                      {"stages", stages},
-                     {"feedback", feedback}};
+                     {"feedback", feedback},
+                     {"stopped", scheduler_->stopped()}};
+    if (scheduler_->stopped())
+        j["pipeline"]["stopped_by"] = {{"instance", scheduler_->stop_reason().where},
+                                       {"reason", scheduler_->stop_reason().message}};
     uint64_t failures = 0;
     for (const auto& s : scheduler_->stages()) failures += s->failures;
     j["counters"] = {{"records_in", scheduler_->records_in()},

@@ -89,6 +89,11 @@ std::vector<std::unique_ptr<Stage>> Engine::plan_stages() {
     std::vector<std::unique_ptr<Stage>> stages;
     for (const StageConfig& sc : config_.stages) {
         const AvailablePlugin* p = loader_->find(sc.plugin_id);
+        if (!p && (sc.plugin_id.find('/') != std::string::npos || sc.plugin_id.find(".so") != std::string::npos))
+            throw ConfigProblem{PN_E_NOT_FOUND, sc.pointer + "/plugin",
+                                "\"" + sc.plugin_id + "\" looks like a file path: a config names plugin ids, and "
+                                "libraries load only from the plugin directories the app gives (pednav plugins lists "
+                                "the ids)"};
         if (!p) {
             const std::string why = loader_->rejection_for(sc.plugin_id);
             throw ConfigProblem{PN_E_NOT_FOUND, sc.pointer + "/plugin",
@@ -108,6 +113,9 @@ std::vector<std::unique_ptr<Stage>> Engine::plan_stages() {
         stage->pointer = sc.pointer;
         stage->descriptor = d;
         stage->ops = d->ops;
+        stage->on_failure = sc.on_failure;
+        stage->call_budget_ns = static_cast<int64_t>(sc.call_budget_ms * 1e6);
+        stage->over_budget = sc.over_budget;
         stage->host_context.source = stage->instance_name;
         stage->host_context.diagnostics = &diagnostics_;
         stage->host_context.origin = &origin_;
@@ -152,9 +160,13 @@ void Engine::create_instances(std::vector<std::unique_ptr<Stage>>& stages) {
         const pn_status_t st = stage.descriptor->create(stage.descriptor, &stage.host_context.host, &ci, &stage.self, &err);
         if (PN_FAILED(st) || !stage.self) {
             const std::string inner = err.where;
-            throw ConfigProblem{PN_FAILED(st) ? st : PN_E_INTERNAL,
-                                sc.pointer + "/params" + (inner.rfind('/', 0) == 0 ? inner : std::string()),
-                                sc.plugin_id + " rejected its params: " + (err.message[0] ? err.message : "no reason given")};
+            const char* reason = err.message[0] ? err.message : "no reason given";
+            if (PN_FAILED(st) && st != PN_E_INTERNAL && st != PN_E_OUT_OF_MEMORY)
+                throw ConfigProblem{st, sc.pointer + "/params" + (inner.rfind('/', 0) == 0 ? inner : std::string()),
+                                    sc.plugin_id + " rejected its params: " + reason};
+            throw ConfigProblem{PN_FAILED(st) ? st : PN_E_INTERNAL, sc.pointer + "/plugin",
+                                sc.plugin_id + " (" + stage.instance_name + ") failed in create" +
+                                    (PN_FAILED(st) ? std::string(": ") + reason : ": it returned no instance")};
         }
     }
 }
@@ -204,7 +216,15 @@ pn_status_t Engine::report_stage_failure(pn_error_t* err) {
     return f.status;
 }
 
+pn_status_t Engine::report_stopped(pn_error_t* err) const {
+    const StageFailure& why = scheduler_->stop_reason();
+    set_error(err, PN_E_BAD_STATE, why.where,
+              "the pipeline is stopped (pn_engine_reset starts it again): " + why.message);
+    return PN_E_BAD_STATE;
+}
+
 pn_status_t Engine::push(const pn_record_header_t* r, pn_error_t* err) {
+    if (scheduler_->stopped()) return report_stopped(err);
     const pn_status_t st = check_input(r, err);
     if (PN_FAILED(st)) {
         ++rejected_inputs_;
@@ -232,6 +252,7 @@ void Engine::take_origin_from_fix(const pn_gnss_t& fix) {
 }
 
 pn_status_t Engine::flush(pn_error_t* err) {
+    if (scheduler_->stopped()) return report_stopped(err);
     scheduler_->flush();
     return stage_failure_status(err);
 }

@@ -49,6 +49,7 @@ private:
         return scheduler_->has_failure() ? report_stage_failure(err) : PN_OK;
     }
     pn_status_t report_stage_failure(pn_error_t* err);  // out of line: not on the per-sample path
+    pn_status_t report_stopped(pn_error_t* err) const;  // PN_E_BAD_STATE naming the stage that stopped it
     void take_origin_from_fix(const pn_gnss_t& fix);
 
     std::vector<std::unique_ptr<Stage>> plan_stages();

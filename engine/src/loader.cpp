@@ -8,9 +8,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <climits>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <set>
+
+#include "library_bounds.hpp"
 
 namespace pednav::engine {
 
@@ -46,6 +49,12 @@ bool is_file(const std::string& path) {
 std::string real_path(const std::string& path) {
     char buf[PATH_MAX];
     return realpath(path.c_str(), buf) ? std::string(buf) : path;
+}
+
+std::string octal_mode(mode_t mode) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "%04o", static_cast<unsigned>(mode & 07777));
+    return buf;
 }
 
 // The one a library would export under another ABI major, if any.
@@ -91,6 +100,56 @@ std::string check_descriptor(const pnp_descriptor_t* d) {
     return {};
 }
 
+// For a library opened from disk: that what it hands over lies in its own
+// memory before anything is read through it (the plugins array for
+// plugin_count entries, each descriptor, its vtable and its id). Empty when it
+// does; the reason otherwise.
+std::string check_bounds(const LibraryBounds& bounds, const pnp_library_t* lib) {
+    if (!lib->plugins || lib->plugin_count == 0) return {};
+    const std::string count = "plugin_count " + std::to_string(lib->plugin_count);
+    if (!bounds.holds(lib->plugins, sizeof(void*) * lib->plugin_count))
+        return count + " runs past the library's memory: the plugins array is shorter";
+    for (uint32_t i = 0; i < lib->plugin_count; ++i) {
+        const pnp_descriptor_t* d = lib->plugins[i];
+        const std::string at = "plugins[" + std::to_string(i) + "] (" + count + ")";
+        if (!d) continue;  // refused by the descriptor checks, with its own reason
+        if (!bounds.holds(d, PNP_DESCRIPTOR_MIN_SIZE))
+            return at + " does not point at a descriptor in the library: is plugin_count larger than the array?";
+        if (d->id && !bounds.holds_string(d->id)) return at + " has an id outside the library";
+        if (d->ops && !bounds.holds(d->ops, PNP_NODE_OPS_MIN_SIZE)) return at + " has a vtable outside the library";
+    }
+    return {};
+}
+
+// The trust model (README, "Trust model"): a plugin directory or library that
+// anyone may write to, or a link leading out of the directory, could hand the
+// app code it did not choose; they are refused, with the reason.
+std::string untrusted_directory(const std::string& dir) {
+    struct stat st;
+    if (stat(dir.c_str(), &st) != 0) return std::string("cannot stat the directory: ") + std::strerror(errno);
+    if (st.st_mode & S_IWOTH)
+        return "the plugin directory is world-writable (mode " + octal_mode(st.st_mode) +
+               "): anyone could put a library there; not scanned";
+    return {};
+}
+
+std::string untrusted_library(const std::string& dir, const std::string& name) {
+    const std::string link = dir + "/" + name;
+    struct stat lst, st;
+    if (lstat(link.c_str(), &lst) != 0 || stat(link.c_str(), &st) != 0)
+        return std::string("cannot stat the file: ") + std::strerror(errno);
+    if (S_ISLNK(lst.st_mode)) {
+        const std::string target = real_path(link), base = real_path(dir) + "/";
+        if (target.compare(0, base.size(), base) != 0)
+            return name + " is a symbolic link to " + target + ", outside the plugin directory " + real_path(dir) +
+                   ": not opened";
+    }
+    if (!S_ISREG(st.st_mode)) return "not a regular file";
+    if (st.st_mode & S_IWOTH)
+        return "the library is world-writable (mode " + octal_mode(st.st_mode) + "): anyone could change it; not opened";
+    return {};
+}
+
 constexpr const char* kNoManifest =
     ": it is opened only when a configured plugin id is in no manifest (pednav_add_plugin writes one)";
 
@@ -131,6 +190,11 @@ void Loader::scan_directory(const std::string& dir) {
                std::string("plugin directory cannot be opened: ") + std::strerror(errno));
         return;
     }
+    if (const std::string why = untrusted_directory(dir); !why.empty()) {
+        closedir(d);
+        reject(real_path(dir), PN_E_IO, why);
+        return;
+    }
     std::vector<std::string> libraries;
     std::set<std::string> manifests;
     while (dirent* e = readdir(d)) {
@@ -157,6 +221,7 @@ void Loader::add_found_file(const std::string& dir, const std::string& name) {
     const std::string path = real_path(dir + "/" + name);
     for (const auto& l : libraries_)
         if (l.path == path) return;  // the same file reached through two directories
+    if (const std::string why = untrusted_library(dir, name); !why.empty()) return reject(path, PN_E_IO, why);
     LibraryFile file;
     file.path = path;
     const std::string manifest = real_path(manifest_path_for(dir + "/" + name));
@@ -282,13 +347,30 @@ void Loader::open_library(size_t index) {
 // the same. Refuses (and closes) the library otherwise.
 bool Loader::accept_library(size_t index, const pnp_library_t* library) {
     LibraryFile& file = libraries_[index];
-    std::string problem = check_library(library);
+    std::string problem;
     pn_status_t status = PN_E_ABI_MISMATCH;
+    // Opened from disk: what it hands over is bounded by its own memory before it is read.
+    const std::optional<LibraryBounds> bounds =
+        file.handle ? std::optional<LibraryBounds>(LibraryBounds(file.handle)) : std::nullopt;
+    if (library && bounds && !bounds->holds(library, PNP_LIBRARY_MIN_SIZE)) {
+        status = PN_E_INVALID_ARGUMENT;
+        problem = "entry function returned a pointer outside the library";
+    }
+    if (problem.empty()) problem = check_library(library);
+    if (problem.empty() && bounds) {
+        problem = check_bounds(*bounds, library);
+        if (!problem.empty()) status = PN_E_INVALID_ARGUMENT;
+    }
     if (problem.empty() && (library->plugin_count == 0 || !library->plugins)) {
         status = PN_E_NOT_FOUND;
         problem = "library declares no plugins";
     }
     if (problem.empty() && file.manifest) problem = manifest_disagreement(*file.manifest, library);
+    if (problem.empty() && file.manifest && library->plugin_count != file.manifest->plugins.size()) {
+        status = PN_E_INVALID_ARGUMENT;
+        problem = "plugin_count " + std::to_string(library->plugin_count) + ", but its manifest " + file.manifest->path +
+                  " lists " + std::to_string(file.manifest->plugins.size()) + " plugins";
+    }
     if (problem.empty()) {
         file.library = library;
         return true;

@@ -65,12 +65,32 @@ struct Checker {
 
     bool finite(const char* field, double v) { return std::isfinite(v) || fail(field, -1, v); }
 
+    // A 3x3 row-major covariance: finite, symmetric and positive
+    // semi-definite, each within kCovarianceTolerance of the variances'
+    // scale (rounding in a filter's update stays far inside it). PSD by
+    // Sylvester's criterion for semi-definite matrices: every principal
+    // minor >= 0 (the diagonal, the three 2x2, the determinant).
     bool covariance(const char* field, const double* c) {
         if (!finite(field, c, 9)) return false;
-        if (c[0] >= 0 && c[4] >= 0 && c[8] >= 0) return true;
-        for (int i = 0; i < 3; ++i)
-            if (c[4 * i] < 0) return fail(field, 4 * i, c[4 * i], "(negative variance)");
-        return false;
+        if (!(c[0] >= 0 && c[4] >= 0 && c[8] >= 0)) {
+            for (int i = 0; i < 3; ++i)
+                if (c[4 * i] < 0) return fail(field, 4 * i, c[4 * i], "(negative variance)");
+        }
+        constexpr double tol = kCovarianceTolerance;
+        constexpr int kPairs[3][4] = {{0, 1, 1, 3}, {0, 2, 2, 6}, {1, 2, 5, 7}};  // i, j, [i][j], [j][i]
+        double s[3];
+        for (int k = 0; k < 3; ++k) {
+            const int i = kPairs[k][0], j = kPairs[k][1];
+            const double a = c[kPairs[k][2]], b = c[kPairs[k][3]], vv = c[4 * i] * c[4 * j];
+            if ((a - b) * (a - b) > tol * tol * vv && a != b)
+                return fail(field, kPairs[k][2], a, "(not symmetric with its transposed element)");
+            s[k] = 0.5 * (a + b);
+            if (s[k] * s[k] > vv * (1 + tol))
+                return fail(field, kPairs[k][2], s[k], "(a correlation above 1: not positive semi-definite)");
+        }
+        const double d0 = c[0], d1 = c[4], d2 = c[8];
+        const double det = d0 * d1 * d2 + 2 * s[0] * s[1] * s[2] - d0 * s[2] * s[2] - d1 * s[1] * s[1] - d2 * s[0] * s[0];
+        return det >= -tol * d0 * d1 * d2 || fail(field, -1, det, "as determinant (not positive semi-definite)");
     }
 
     bool unit_quaternion(const char* field, const double* q) {

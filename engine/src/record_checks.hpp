@@ -16,11 +16,16 @@ const char* record_type_name(pn_record_type_t type);  // "imu", "position", ... 
 constexpr uint64_t kInputTypes = PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_MAG) |
                                  PN_REC_MASK(PN_REC_BARO) | PN_REC_MASK(PN_REC_GNSS);
 
+// A covariance is symmetric when |c_ij - c_ji| <= this * sqrt(c_ii c_jj), and
+// positive semi-definite when its principal minors are >= -this times the
+// product of their variances.
+constexpr double kCovarianceTolerance = 1e-6;
+
 // A quaternion is of unit norm when | |q| - 1 | <= this.
 constexpr double kUnitQuaternionTolerance = 1e-3;
 
 // The first value of a record a consumer could not rely on: not finite, or out
-// of physical range (covariance diagonals non-negative, quaternions of unit
+// of physical range (covariances symmetric positive semi-definite, quaternions of unit
 // norm, pressure positive, latitude and longitude in range). Nothing in it is
 // allocated; the text is made by describe() or format_value_problem() only
 // for a refused record.

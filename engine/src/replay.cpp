@@ -23,6 +23,12 @@ std::string describe(const pn_engine_t* engine) {
     return text;
 }
 
+// Whether a stage's failure policy stopped the pipeline (pn_engine_describe).
+bool stopped(const pn_engine_t* engine) {
+    const auto d = nlohmann::json::parse(describe(engine), nullptr, false);
+    return !d.is_discarded() && d["pipeline"].value("stopped", false);
+}
+
 void collect(pn_engine_t* engine, ReplayResult& out) {
     pn_output_t o;
     while (pn_engine_poll(engine, &o) == PN_OK) {
@@ -102,14 +108,23 @@ ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_rec
     const size_t total = records.size();
     for (size_t i = 0; i < total; ++i) {
         st = pn_engine_push(engine.get(), records[i], &err);
+        if (st == PN_E_BAD_STATE && stopped(engine.get())) {  // a stage's policy stopped the pipeline
+            result.warnings.push_back("record " + std::to_string(i) + ": " + error_text(err, st) + "; the " +
+                                      std::to_string(total - i) + " records from here on were not processed");
+            result.stopped = true;
+            break;
+        }
         if (PN_FAILED(st)) result.warnings.push_back("record " + std::to_string(i) + ": " + error_text(err, st));
         if ((i & 1023) == 1023) {
             collect(engine.get(), result);
             if (options.progress) options.progress(i + 1, total, options.progress_user);
         }
     }
-    st = pn_engine_flush(engine.get(), &err);
-    if (PN_FAILED(st)) result.warnings.push_back("flush: " + error_text(err, st));
+    if (!result.stopped) {
+        st = pn_engine_flush(engine.get(), &err);
+        if (PN_FAILED(st)) result.warnings.push_back("flush: " + error_text(err, st));
+        result.stopped = st == PN_E_BAD_STATE && stopped(engine.get());
+    }
     collect(engine.get(), result);
     if (options.progress) options.progress(total, total, options.progress_user);
     result.describe_json = describe(engine.get());

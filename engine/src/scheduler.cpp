@@ -2,6 +2,7 @@
 #include "scheduler.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <new>
 
@@ -31,6 +32,11 @@ pn_status_t sink_emit(const pnp_sink_t* sink, const pn_record_header_t* record) 
 }
 
 double seconds(int64_t t_ns) { return static_cast<double>(t_ns) * 1e-9; }
+
+int64_t now_ns() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 
 }  // namespace
 
@@ -167,6 +173,7 @@ pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
 }
 
 void Scheduler::push(const pn_record_header_t* r) {
+    if (stopped_) return;
     for (auto& s : stages_) s->flushed = false;
     ++records_in_;
     if (queue_wanted_[0] & PN_REC_MASK(r->type)) queues_[0].push(r);
@@ -183,12 +190,8 @@ void Scheduler::flush() {
     app_limit_ns_ = kInf;
     drain();
     for (auto& s : stages_) {
-        if (PNP_HAS_SLOT(s->ops, pnp_node_ops_t, flush)) {
-            pn_error_t err{};
-            err.struct_size = sizeof err;
-            const pn_status_t st = s->ops->flush(s->self, &s->sink, &err);
-            if (PN_FAILED(st)) report_failure(*s, st, err, "flush");
-        }
+        if (stopped_) break;
+        if (PNP_HAS_SLOT(s->ops, pnp_node_ops_t, flush)) call_flush(*s);
         s->flushed = true;
         drain();
     }
@@ -216,6 +219,8 @@ pn_status_t Scheduler::reset(pn_error_t* err) {
     app_limit_ns_ = INT64_MIN;
     last_app_t_ns_ = INT64_MIN;
     failure_ = StageFailure{};
+    stopped_ = false;
+    stop_reason_ = StageFailure{};
     return PN_OK;
 }
 
@@ -279,8 +284,52 @@ void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records,
     err.struct_size = sizeof err;
     err.code = PN_OK;
     err.where[0] = err.message[0] = '\0';
-    const pn_status_t st = s.ops->process(s.self, records, count, &s.sink, &err);
+    pn_status_t st;
+    if (s.call_budget_ns) {
+        const int64_t t0 = now_ns();
+        st = s.ops->process(s.self, records, count, &s.sink, &err);
+        check_budget(s, now_ns() - t0, "process");
+    } else {
+        st = s.ops->process(s.self, records, count, &s.sink, &err);
+    }
     if (PN_FAILED(st)) report_failure(s, st, err, "process");
+}
+
+void Scheduler::call_flush(Stage& s) {
+    pn_error_t err{};
+    err.struct_size = sizeof err;
+    const int64_t t0 = s.call_budget_ns ? now_ns() : 0;
+    const pn_status_t st = s.ops->flush(s.self, &s.sink, &err);
+    if (s.call_budget_ns) check_budget(s, now_ns() - t0, "flush");
+    if (PN_FAILED(st)) report_failure(s, st, err, "flush");
+}
+
+// A call slower than the stage's call_budget_ms: a warning (the first, then
+// at the 2nd, 4th, 8th, ... overrun, so a slow plugin cannot flood the log),
+// or, with over_budget "stop", a failure that stops the pipeline.
+void Scheduler::check_budget(Stage& s, int64_t took_ns, const char* during) {
+    s.slowest_call_ns = std::max(s.slowest_call_ns, took_ns);
+    if (took_ns <= s.call_budget_ns) return;
+    const uint64_t n = ++s.calls_over_budget;
+    char msg[256];
+    std::snprintf(msg, sizeof msg, "(%s) took %.3f ms in %s, over its call_budget_ms of %.3f ms (%llu call%s over budget)",
+                  s.plugin_id.c_str(), static_cast<double>(took_ns) * 1e-6, during,
+                  static_cast<double>(s.call_budget_ns) * 1e-6, static_cast<unsigned long long>(n), n == 1 ? "" : "s");
+    if (s.over_budget == OverBudget::stop) {
+        if (stopped_) return;
+        ++s.failures;
+        const std::string text = s.instance_name + " " + msg + "; over_budget is \"stop\": the pipeline is stopped";
+        diagnostics_.note(PNP_LOG_ERROR, s.instance_name.c_str(), text.c_str() + s.instance_name.size() + 1);
+        if (failure_.status == PN_OK) failure_ = StageFailure{PN_E_BAD_STATE, s.instance_name, text};
+        stop(s, PN_E_BAD_STATE, text);
+    } else if ((n & (n - 1)) == 0) {
+        diagnostics_.warn(s.instance_name.c_str(), msg);
+    }
+}
+
+void Scheduler::stop(const Stage& s, pn_status_t status, const std::string& message) {
+    stopped_ = true;
+    stop_reason_ = StageFailure{status, s.instance_name, message};
 }
 
 void Scheduler::report_failure(Stage& s, pn_status_t status, const pn_error_t& err, const char* during) {
@@ -289,16 +338,25 @@ void Scheduler::report_failure(Stage& s, pn_status_t status, const pn_error_t& e
     msg += err.message[0] ? err.message : "no message";
     if (s.sink_problem[0]) msg += std::string("; the engine refused its output: ") + s.sink_problem;
     s.sink_problem[0] = '\0';
-    if (status == PN_E_NUMERIC || status == PN_E_INTERNAL) {
+    bool stop_now = s.on_failure == OnFailure::stop;
+    if (stop_now) {
+        msg += "; on_failure is \"stop\": the pipeline is stopped until pn_engine_reset";
+    } else if (status == PN_E_NUMERIC || status == PN_E_INTERNAL) {
         pn_error_t reset_err{};
         reset_err.struct_size = sizeof reset_err;
         if (!PN_FAILED(s.ops->reset(s.self, &reset_err))) {
             ++s.resets;
             msg += " (the instance was reset)";
+        } else {
+            msg += std::string("; its reset failed too (") + (reset_err.message[0] ? reset_err.message : "no message") +
+                   "): the pipeline is stopped";
+            stop_now = true;  // an instance that cannot be reset is not called again
         }
     }
     diagnostics_.note(PNP_LOG_ERROR, s.instance_name.c_str(), msg.c_str());
-    if (failure_.status == PN_OK) failure_ = StageFailure{status, s.instance_name, s.instance_name + " " + msg};
+    const std::string text = s.instance_name + " " + msg;
+    if (failure_.status == PN_OK) failure_ = StageFailure{status, s.instance_name, text};
+    if (stop_now && !stopped_) stop(s, status, text);
 }
 
 void Scheduler::drain() {
@@ -314,6 +372,7 @@ void Scheduler::drain_from(size_t k, int64_t limit) {
     Stage& s = *stages_[k];
     const bool last = k + 1 == stages_.size();
     for (;;) {
+        if (stopped_) return;
         const bool had_feedback = !s.feedback.empty() && deliver_feedback(s);
         const int64_t t = peek(s, limit);
         if (!last) {

@@ -58,6 +58,11 @@ struct Stage {
     void* self = nullptr;
     int64_t latency_ns = 0;
 
+    // What the config says to do when it fails or is slow (config.hpp).
+    OnFailure on_failure = OnFailure::reset;
+    int64_t call_budget_ns = 0;  // 0 = no budget
+    OverBudget over_budget = OverBudget::warn;
+
     // Wiring, filled by Scheduler::wire().
     struct Input {
         int queue;
@@ -78,6 +83,8 @@ struct Stage {
 
     // Counters.
     uint64_t records_in = 0, records_out = 0, failures = 0, resets = 0;
+    uint64_t calls_over_budget = 0;
+    int64_t slowest_call_ns = 0;  // measured only with a budget
 
     // What the plugin gets: host.host_data points at the context, sink_data
     // back here.
@@ -116,6 +123,10 @@ public:
     // The first stage failure since the last call, and clears it.
     StageFailure take_failure();
     bool has_failure() const { return failure_.status != PN_OK; }
+    // A stage whose policy is "stop" failed (or overran its budget): nothing
+    // is processed until reset(). stop_reason() says who and why.
+    bool stopped() const { return stopped_; }
+    const StageFailure& stop_reason() const { return stop_reason_; }
 
     // Atomic: the mask may be set from any thread while records flow.
     void set_output_mask(uint64_t mask) { output_mask_.store(mask, std::memory_order_relaxed); }
@@ -139,7 +150,10 @@ private:
     bool deliver_feedback(Stage& s);
     void deliver_forward(Stage& s, int64_t t_ns);
     void call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count);
+    void call_flush(Stage& s);
     void report_failure(Stage& s, pn_status_t status, const pn_error_t& err, const char* during);
+    void check_budget(Stage& s, int64_t took_ns, const char* during);
+    void stop(const Stage& s, pn_status_t status, const std::string& message);
     pn_status_t refuse(Stage& s, pn_status_t status);  // logs s.sink_problem as misbehaviour
     void release_consumed();
     int64_t checked_latency(const Stage& s) const;
@@ -155,6 +169,8 @@ private:
     uint64_t records_in_ = 0;
     uint64_t drains_ = 0;
     StageFailure failure_;
+    bool stopped_ = false;
+    StageFailure stop_reason_;
     Diagnostics& diagnostics_;
 };
 

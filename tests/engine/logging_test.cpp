@@ -34,7 +34,7 @@ const char* const kLevels[] = {"debug", "info", "warn", "error"};
 
 }  // namespace
 
-TEST_CASE("a plain C plugin logging at every level from init, create, process and destroy") {
+TEST_CASE("a plain C plugin logging at every level from init, create, process, latency_ns, flush, reset, destroy and deinit") {
     std::vector<LogLine> lines;
     const std::string config = make_config({{"position_filter", "org.pednav.test.logs_everywhere"}});
     {
@@ -61,10 +61,26 @@ TEST_CASE("a plain C plugin logging at every level from init, create, process an
         CHECK(warnings.count("foot/position_filter: error at create") == 1);
         CHECK(warnings.count("foot/position_filter: warn at process") == 1);
         CHECK(warnings.count("foot/position_filter: info at create") == 0);
-        CHECK(d["counters"]["warnings"].get<uint64_t>() == 2 + 2 + 2 * process_calls);
+        // init, create, latency_ns (read once when the pipeline is wired), flush, and each process call.
+        for (const char* l : kLevels) {
+            CHECK(count(lines, "foot/position_filter", std::string(l) + " at latency_ns") == 1);
+            CHECK(count(lines, "foot/position_filter", std::string(l) + " at flush") == 1);
+        }
+        CHECK(d["counters"]["warnings"].get<uint64_t>() == 2 + 2 + 2 + 2 + 2 * process_calls);
         CHECK(count(lines, "foot/position_filter", "warn at destroy") == 0);
+
+        // A reset calls reset and reads the look-ahead again; both log at every level.
+        REQUIRE(pn_engine_reset(e.get(), &err) == PN_OK);
+        for (const char* l : kLevels) {
+            CHECK(count(lines, "foot/position_filter", std::string(l) + " at reset") == 1);
+            CHECK(count(lines, "foot/position_filter", std::string(l) + " at latency_ns") == 2);
+        }
+        CHECK(count(lines, "org.pednav.test.logs_everywhere", "warn at deinit") == 0);
     }
-    for (const char* l : kLevels) CHECK(count(lines, "foot/position_filter", std::string(l) + " at destroy") == 1);
+    for (const char* l : kLevels) {
+        CHECK(count(lines, "foot/position_filter", std::string(l) + " at destroy") == 1);
+        CHECK(count(lines, "org.pednav.test.logs_everywhere", std::string(l) + " at deinit") == 1);
+    }
 }
 
 TEST_CASE("instances already created are destroyed when the pipeline cannot be built") {

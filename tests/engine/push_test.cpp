@@ -3,6 +3,7 @@
 // strides, determinism, look-ahead alignment, feedback, flush and reset.
 #include <doctest/doctest.h>
 
+#include "same_bytes.hpp"
 #include "test_support.hpp"
 
 using namespace pednav::test;
@@ -26,15 +27,6 @@ std::string full_config(int latency_samples, double correction_rad) {
          {"position_filter",
           "org.pednav.test.step_counter",
           {{"check_alignment", true}, {"correction_rad", correction_rad}}}});
-}
-
-bool same_bytes(const std::vector<pn_output_t>& a, const std::vector<pn_output_t>& b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i)
-        if (a[i].header.struct_size != b[i].header.struct_size ||
-            std::memcmp(&a[i], &b[i], a[i].header.struct_size) != 0)
-            return false;
-    return true;
 }
 
 }  // namespace

@@ -107,3 +107,54 @@ TEST_CASE("every refused record names the field, the element and the value") {
         CHECK(describe(find_value_problem(&r.header)) == "vel_enu_mps[0] is nan");
     }
 }
+
+TEST_CASE("a covariance is refused when it is not symmetric or not positive semi-definite, with the element") {
+    auto pos = record<pn_position_t>(PN_REC_POSITION);
+    double* c = pos.cov_enu_m2;
+    auto verdict = [&] { return describe(find_value_problem(&pos.header)); };
+    auto fill = [&](const double (&m)[9]) { std::memcpy(c, m, sizeof m); };
+
+    SUBCASE("valid: diagonal, rank-deficient, and a rotated one with rounding") {
+        const double diagonal[9] = {1, 0, 0, 0, 2, 0, 0, 0, 3};
+        fill(diagonal);
+        CHECK(record_values_ok(&pos.header));
+        const double rank_one_block[9] = {1, 1, 0, 1, 1, 0, 0, 0, 1};  // correlation exactly 1: PSD, singular
+        fill(rank_one_block);
+        CHECK(record_values_ok(&pos.header));
+        // R diag(4, 1, 0.25) R^T for a rotation of 0.7 rad about z then 0.3 about x, in doubles.
+        const double cz = std::cos(0.7), sz = std::sin(0.7), cx = std::cos(0.3), sx = std::sin(0.3);
+        const double R[3][3] = {{cz, -sz * cx, sz * sx}, {sz, cz * cx, -cz * sx}, {0, sx, cx}};
+        const double d[3] = {4, 1, 0.25};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                c[3 * i + j] = 0;
+                for (int k = 0; k < 3; ++k) c[3 * i + j] += R[i][k] * d[k] * R[j][k];
+            }
+        CHECK(record_values_ok(&pos.header));
+    }
+    SUBCASE("a correlation of 2 between east and north") {
+        const double m[9] = {1, 2, 0, 2, 1, 0, 0, 0, 1};
+        fill(m);
+        CHECK_FALSE(record_values_ok(&pos.header));
+        CHECK_MESSAGE(contains(verdict(), "cov_enu_m2[1] is 2 (a correlation above 1: not positive semi-definite)"),
+                      verdict());
+    }
+    SUBCASE("every 2x2 minor fine, the determinant negative") {
+        // Correlations 0.9, 0.9, -0.9: each pair is possible, the three together are not.
+        const double m[9] = {1, 0.9, 0.9, 0.9, 1, -0.9, 0.9, -0.9, 1};
+        fill(m);
+        CHECK_FALSE(record_values_ok(&pos.header));
+        CHECK_MESSAGE(contains(verdict(), "as determinant (not positive semi-definite)"), verdict());
+    }
+    SUBCASE("[0][1] and [1][0] differ") {
+        const double m[9] = {1, 0.5, 0, 0, 1, 0, 0, 0, 1};
+        fill(m);
+        CHECK_FALSE(record_values_ok(&pos.header));
+        CHECK_MESSAGE(contains(verdict(), "cov_enu_m2[1] is 0.5 (not symmetric"), verdict());
+    }
+    SUBCASE("an asymmetry of rounding size is accepted") {
+        const double m[9] = {1, 0.5, 0, 0.5 * (1 + 1e-12), 1, 0, 0, 0, 1};
+        fill(m);
+        CHECK(record_values_ok(&pos.header));
+    }
+}

@@ -14,11 +14,12 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: pednav plugins [--json] [--no-open] [--plugin-dir DIR]\n"
+    "usage: pednav plugins [--json] [--open] [--plugin-dir DIR]\n"
     "       pednav plugins --params [--markdown] [--check | --update FILE...] [--plugin-dir DIR]\n"
     "  the plugins found (next to the executable and in each --plugin-dir), the files rejected and\n"
-    "  the libraries without a manifest; every library is opened to check it against its manifest,\n"
-    "  --no-open reads the manifests only;\n"
+    "  the libraries without a manifest, from the manifests alone: no library is opened, so none of\n"
+    "  its code runs; --open opens every library (its constructors run) to check it against its\n"
+    "  manifest and to list the plugins of libraries without one (--no-open: the default);\n"
     "  --params: every plugin's parameters (key, type, unit, range, default, meaning), --markdown as the\n"
     "  README's tables; --check FILE...: the tables between <!-- params:begin --> and <!-- params:end -->\n"
     "  in each FILE agree with the schemas (exit 1 naming each difference); --update FILE...: rewrite\n"
@@ -52,13 +53,14 @@ int pednav_cmd_plugins(const std::vector<std::string>& argv) {
     using namespace pednav;
     cli::Args args(argv, kUsage);
     bool json = false;
-    uint32_t flags = PN_LIST_OPEN_LIBRARIES;
+    uint32_t flags = 0;
     cli::ParamsRequest params_request;
     std::vector<std::string> dirs = {cli::default_plugin_dir()};
     while (!args.done()) {
         const std::string a = args.next();
         if (a == "--json") json = true;
         else if (a == "--no-open") flags = 0;
+        else if (a == "--open") flags = PN_LIST_OPEN_LIBRARIES;
         else if (a == "--plugin-dir") dirs.push_back(args.value(a));
         else if (a == "--params") params_request.params = true;
         else if (a == "--markdown") params_request.markdown = true;
@@ -88,8 +90,15 @@ int pednav_cmd_plugins(const std::vector<std::string>& argv) {
     for (const auto& r : j["rejected"])
         std::printf("rejected %s: %s (%s)\n", r["path"].get<std::string>().c_str(),
                     r["reason"].get<std::string>().c_str(), r["status"].get<std::string>().c_str());
-    for (const auto& w : j["load_warnings"])
-        std::printf("warning %s: %s\n", w["path"].get<std::string>().c_str(),
-                    w["warning"].get<std::string>().c_str());
+    bool unopened = false;
+    for (const auto& w : j["load_warnings"]) {
+        const std::string text = w["warning"].get<std::string>();
+        std::printf("warning %s: %s\n", w["path"].get<std::string>().c_str(), text.c_str());
+        unopened = unopened || (flags == 0 && text.find("manifest") != std::string::npos &&
+                                w["path"].get<std::string>().find(".so") != std::string::npos);
+    }
+    if (unopened)
+        std::printf("note: a library without a usable manifest is not opened by this listing and its plugins are "
+                    "not shown; pednav plugins --open opens it (its constructors run)\n");
     return 0;
 }

@@ -10,6 +10,7 @@
 
 #include "cli_common.hpp"
 #include "subcommands.hpp"
+#include "supervise.hpp"
 
 namespace {
 
@@ -35,18 +36,24 @@ int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 2, argv + argc);
     for (const auto& c : pednav_subcommands()) {
         if (command != c.name) continue;
-        try {
-            return c.run(args);
-        } catch (const pednav::cli::HelpRequested& e) {
-            std::fputs(e.what(), stdout);
-            return 0;
-        } catch (const pednav::cli::UsageError& e) {
-            std::fprintf(stderr, "pednav %s: %s\n%s", c.name, e.what(), c.usage);
-            return 2;
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "pednav %s: %s\n", c.name, e.what());
-            return 1;
-        }
+        auto run = [&]() -> int {
+            try {
+                return c.run(args);
+            } catch (const pednav::cli::HelpRequested& e) {
+                std::fputs(e.what(), stdout);
+                return 0;
+            } catch (const pednav::cli::UsageError& e) {
+                std::fprintf(stderr, "pednav %s: %s\n%s", c.name, e.what(), c.usage);
+                return 2;
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "pednav %s: %s\n", c.name, e.what());
+                return 1;
+            }
+        };
+        // `run` drives plugins over a whole recording: a plugin ending the
+        // process (abort, segfault, _exit(0)) must not pass for a clean run.
+        if (command == "run") return pednav::cli::run_supervised(c.name, run);
+        return run();
     }
     std::fprintf(stderr, "pednav: unknown command \"%s\"\n", command.c_str());
     print_usage(stderr);

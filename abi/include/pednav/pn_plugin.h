@@ -23,6 +23,29 @@
  * Ownership: input records are borrowed for the duration of the call; output
  * records are handed to the sink, which copies them before it returns.
  * No C++ type, exception or heap pointer crosses this boundary.
+ *
+ * Exceptions: no slot may throw. In C++17 every slot is a noexcept function
+ * pointer; an exception leaving one calls std::terminate, or, where the
+ * plugin cast a throwing function to the slot type, unwinds through engine
+ * frames compiled on the promise that nothing throws: undefined behaviour
+ * that no engine can catch portably. Plugins built with the SDK
+ * (pednav_sdk/library.hpp) are safe: its trampolines catch every exception
+ * in every slot and return a status with the message (PN_E_INTERNAL,
+ * "plugin threw: what()"). A raw C++ plugin must do the same itself;
+ * `pednav validate` runs a plugin in a child process to find one that
+ * does not.
+ *
+ * Failures: a failed process or flush, and an output the engine refuses
+ * (non-finite, a covariance not symmetric positive semi-definite, time going
+ * backwards, an undeclared type), are reported to the app naming the
+ * instance and plugin id; the stage's config then resets the instance or
+ * stops the pipeline ("on_failure"), and may bound each call's time
+ * ("call_budget_ms"); see docs/config.md.
+ *
+ * Library data: the pnp_library_t, its plugins array (plugin_count entries),
+ * the descriptors, vtables and ids must be static data of the library file
+ * itself; the loader checks they lie in its loaded segments before reading
+ * them and refuses the library otherwise.
  */
 #ifndef PEDNAV_PN_PLUGIN_H
 #define PEDNAV_PN_PLUGIN_H

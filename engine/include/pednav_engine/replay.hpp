@@ -36,6 +36,7 @@ struct ReplayResult {
     std::vector<std::string> warnings;     // input rows rejected, plugin misbehaviour, ...
     std::string error;                     // non-empty when the run stopped early; outputs so far are kept
     uint64_t plugin_failures = 0;          // plugin calls that failed (each also in warnings)
+    bool stopped = false;                  // a stage's failure policy stopped the pipeline (the last warning says where)
     int64_t latency_ns = 0;                // pipeline output latency
     std::string describe_json;             // pn_engine_describe() at the end
     bool has_origin = false;               // the engine had a geodetic origin at the end (pn_engine_get_origin)

@@ -263,8 +263,14 @@ struct Trampolines {
             return status_from_exception(err, T::kId);
         }
     }
+    // A throw here has no error to carry it: -1 is outside the range the
+    // engine accepts, so it refuses the plugin at create naming it.
     static int64_t latency_ns(const void* self) noexcept {
-        return static_cast<const Instance<T>*>(self)->node->latency_ns();
+        try {
+            return static_cast<const Instance<T>*>(self)->node->latency_ns();
+        } catch (...) {
+            return -1;
+        }
     }
 
     static pn_status_t unsupported(pn_error_t* err, const char* what) {
