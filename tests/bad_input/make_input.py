@@ -97,9 +97,31 @@ def make(kind):
         return "xsens.txt", "\n".join(lines) + "\n"
     if kind == "unreadable":  # a directory without a recording
         return "folder", None
+    if kind == "map_truncated":
+        return "map.geojson", '{"format": "pednav.map/1", "type": "FeatureCollection", "features": ['
+    if kind == "map_deep":  # 100 000 nested arrays where the features belong
+        return "map.geojson", ('{"format": "pednav.map/1", "type": "FeatureCollection", "features": '
+                               + "[" * 100000 + "]" * 100000 + "}")
+    if kind.startswith("gnss_"):
+        return "gnss.csv", make_gnss(kind[len("gnss_"):])
     if kind.startswith("config_"):
         return "config.json", make_config(kind[len("config_"):])
     raise SystemExit("unknown kind " + kind)
+
+
+def make_gnss(what):
+    """A GNSS CSV of 1 Hz fixes walking north at 1.4 m/s, spoiled by WHAT; fix i is at line i + 2."""
+    out = "t,lat,lon,hacc,sats\n"
+    for i in range(60):
+        t = i * 1.0 + (0.002 * ((i * 7) % 5) if what == "routine_1hz" else 0.0)  # receiver jitter
+        lat = 48.1 + i * 1.4 / 111320.0
+        if what == "jumps" and i == 30:
+            lat += 0.01  # 1.1 km away for one fix
+        sats = 0 if what == "zero_satellites" and 20 <= i < 25 else 9
+        if what == "before_imu":
+            t -= 5.0  # the receiver logged 5 s before the IMU started
+        out += "%.3f,%.8f,11.5,3.0,%d\n" % (t, lat, sats)
+    return out
 
 
 def stage(doc, role):
@@ -153,6 +175,9 @@ def main():
         return
     with open(path, "wb") as f:
         f.write(content if isinstance(content, bytes) else content.encode("utf-8"))
+    if kind.startswith("gnss_"):  # the recording the fixes go with, 10 s from t = 0
+        with open(os.path.join(out_dir, "clean.csv"), "w", encoding="utf-8") as f:
+            f.write(canonical(rows(0, 1000)))
 
 
 main()
