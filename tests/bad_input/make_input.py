@@ -86,6 +86,9 @@ def make(kind):
     if kind == "nonpositive_pressure":
         body = "".join(row(i).rstrip("\n") + ",0\n" for i in range(1000))
         return "pressure.csv", "t,ax,ay,az,gx,gy,gz,p\n" + body
+    if kind == "utf8_cell":  # ill-formed UTF-8 in a cell (line 302) and in the file name
+        body = (HEADER + rows(0, 300)).encode() + b"3.00,\xff\xfe,0,9.8,0,0,0\n" + rows(301, 1000).encode()
+        return "bad\udcffname.csv", body
     if kind == "comment_only":
         return "comment.csv", "# a file of one comment line\n"
     if kind == "no_time_column":
@@ -169,14 +172,14 @@ def main():
     kind, out_dir = sys.argv[1], sys.argv[2]
     os.makedirs(out_dir, exist_ok=True)
     name, content = make(kind)
-    path = os.path.join(out_dir, name)
+    path = os.path.join(out_dir, name).encode("utf-8", "surrogateescape")
     if content is None:
         os.makedirs(path, exist_ok=True)
         return
     with open(path, "wb") as f:
         f.write(content if isinstance(content, bytes) else content.encode("utf-8"))
     if kind.startswith("gnss_"):  # the recording the fixes go with, 10 s from t = 0
-        with open(os.path.join(out_dir, "clean.csv"), "w", encoding="utf-8") as f:
+        with open(os.path.join(out_dir, "clean.csv"), "w", encoding="utf-8") as f:  # noqa
             f.write(canonical(rows(0, 1000)))
 
 

@@ -3,7 +3,8 @@
 #       -DCLI=<pednav> -DARGS="a|%DIR%/file|..." -DEXPECT_RC=<n> [-DEXPECT_OUT=..] [-DEXPECT_ERR=..]
 #       [-DEXPECT_FILE=%DIR%/out -DEXPECT_FILE_REGEX=..] -P run_case.cmake
 # One case of the bad-input catalogue: writes its input, then runs the CLI
-# on it and checks as run_cli.cmake does (%DIR% in ARGS and EXPECT_FILE is the work dir).
+# on it and checks as run_cli.cmake does (%DIR% in ARGS and EXPECT_FILE is the work dir,
+# %CSV% in ARGS the CSV file written there).
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
 if(KIND)
@@ -13,6 +14,12 @@ if(KIND)
   endif()
 endif()
 string(REPLACE "|" ";" ARGS "${ARGS}")
+# %CSV%: the one CSV the generator wrote, whatever bytes its name holds.
+file(GLOB csv "${DIR}/*.csv")
+if(csv)
+  list(GET csv 0 csv)
+  string(REPLACE "%CSV%" "${csv}" ARGS "${ARGS}")
+endif()
 string(REPLACE "%DIR%" "${DIR}" ARGS "${ARGS}")
 if(DEFINED EXPECT_FILE)
   string(REPLACE "%DIR%" "${DIR}" EXPECT_FILE "${EXPECT_FILE}")
