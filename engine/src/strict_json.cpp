@@ -10,9 +10,12 @@ namespace pednav::engine {
 std::string json_pointer_append(const std::string& pointer, std::string_view token) {
     std::string out = pointer + "/";
     for (const char c : token) {
-        if (c == '~') out += "~0";
-        else if (c == '/') out += "~1";
-        else out += c;
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
     }
     return out;
 }
@@ -59,7 +62,8 @@ std::string position_of(std::string_view text, size_t offset) {
 std::string parse_reason(const std::string& what) {
     std::string reason = what;
     if (const size_t at = reason.find("parse error"); at != std::string::npos) {
-        if (const size_t colon = reason.find(": ", at); colon != std::string::npos) reason = reason.substr(colon + 2);
+        if (const size_t colon = reason.find(": ", at); colon != std::string::npos)
+            reason = reason.substr(colon + 2);
     }
     for (char& c : reason) {
         const auto u = static_cast<unsigned char>(c);
@@ -72,7 +76,8 @@ std::string parse_reason(const std::string& what) {
 
 nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
     if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
-        throw StrictJsonError("", "a NUL byte at " + position_of(text, nul) + " (byte " + std::to_string(nul) +
+        throw StrictJsonError("", "a NUL byte at " + position_of(text, nul) + " (byte " +
+                                      std::to_string(nul) +
                                       "): the text after it would be ignored by C callers");
     }
     std::vector<Level> stack;
@@ -85,9 +90,10 @@ nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
                 level.is_object = event == Event::object_start;
                 level.pointer = next_pointer(stack);
                 if (stack.size() >= max_depth) {
-                    throw StrictJsonError(level.pointer, "arrays and objects nested deeper than " +
-                                                             std::to_string(max_depth) + " levels at " +
-                                                             (level.pointer.empty() ? "the top" : level.pointer));
+                    throw StrictJsonError(
+                        level.pointer, "arrays and objects nested deeper than " + std::to_string(max_depth) +
+                                           " levels at " +
+                                           (level.pointer.empty() ? "the top" : level.pointer));
                 }
                 stack.push_back(std::move(level));
                 break;
@@ -97,8 +103,9 @@ nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
                 const std::string key = parsed.get<std::string>();
                 top.member = json_pointer_append(top.pointer, key);
                 if (!top.keys.insert(key).second)
-                    throw StrictJsonError(top.member, "duplicate key \"" + key + "\" in " +
-                                                          (top.pointer.empty() ? "the document" : top.pointer));
+                    throw StrictJsonError(top.member,
+                                          "duplicate key \"" + key + "\" in " +
+                                              (top.pointer.empty() ? "the document" : top.pointer));
                 break;
             }
             case Event::object_end:
@@ -108,9 +115,8 @@ nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
                 break;
             case Event::value:
                 if (parsed.is_number_float() && !std::isfinite(parsed.get<double>()))
-                    throw StrictJsonError(next_pointer(stack),
-                                          "the number at " + next_pointer(stack) +
-                                              " is out of range (not a finite double)");
+                    throw StrictJsonError(next_pointer(stack), "the number at " + next_pointer(stack) +
+                                                                   " is out of range (not a finite double)");
                 element_done(stack);
                 break;
         }

@@ -75,9 +75,9 @@ void ColumnCheck::report(LogBuilder& builder) const {
         std::snprintf(text, sizeof text,
                       "saturated sensor: column %s sits at its %s %g %s on %zu of %zu samples (%.1f %%), in "
                       "runs of up to %zu (lines %zu-%zu): flat tops where the sensor clips",
-                      column_.c_str(), e == &max_ ? "maximum" : "minimum", e->value, unit_, e->count, samples_,
-                      100.0 * static_cast<double>(e->count) / static_cast<double>(samples_), e->longest_run,
-                      e->longest_first, e->longest_last);
+                      column_.c_str(), e == &max_ ? "maximum" : "minimum", e->value, unit_, e->count,
+                      samples_, 100.0 * static_cast<double>(e->count) / static_cast<double>(samples_),
+                      e->longest_run, e->longest_first, e->longest_last);
         builder.issue(e->longest_first, text);
     }
 }

@@ -27,8 +27,8 @@ public:
 private:
     struct Extreme {
         double value = 0.0;
-        size_t count = 0;          // samples at exactly this value
-        size_t run = 0;            // current run length at it
+        size_t count = 0;  // samples at exactly this value
+        size_t run = 0;    // current run length at it
         size_t longest_run = 0;
         size_t longest_first = 0;  // lines of the longest run
         size_t longest_last = 0;
