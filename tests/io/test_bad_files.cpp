@@ -3,6 +3,7 @@
 // around it are kept; fatal ones throw ReadError naming the file and reason.
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
@@ -158,5 +159,100 @@ TEST_CASE("fatal: missing, empty, binary, unknown, no accelerometer/gyroscope co
     } catch (const ReadError& e) {
         CHECK(e.path() == dir + "/nope.csv");
         CHECK(e.line() == 0);
+    }
+}
+
+TEST_CASE("regression (issue 18): a forced format on a file it does not fit fails cleanly") {
+    const std::string dir = temp_dir();
+    const std::string comment = write_file(dir, "comment.csv", "# one comment line\n");
+    for (const char* format : {"pednav-csv", "xio-ngimu-csv", "microstrain-sensorconnect-a",
+                               "microstrain-sensorconnect-b"}) {
+        ReadOptions options;
+        options.format = format;
+        try {
+            read_sensor_file(comment, options);
+            FAIL("no exception for ", format);
+        } catch (const ReadError& e) {
+            CHECK(e.line() == 0);  // there is no line 2 to name
+            CHECK(e.reason().find("no header line for format") != std::string::npos);
+        }
+    }
+    ReadOptions options;
+    options.format = "pednav-csv";
+    const std::string no_t = write_file(dir, "no_t.csv", "x,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n");
+    try {
+        read_sensor_file(no_t, options);
+        FAIL("no exception");
+    } catch (const ReadError& e) {
+        CHECK(e.line() == 1);
+        CHECK(e.reason() == "no time column: the header lacks t");
+    }
+}
+
+TEST_CASE("regression (issue 18): Unix times in t, a time beyond the clock, CR-only lines") {
+    const std::string dir = temp_dir();
+    std::ostringstream ns;
+    ns.precision(20);
+    for (int i = 0; i < 100; ++i) ns << 1700000000000000000LL + i * 10000000LL << ",0,0,9.8,0,0,0\n";
+    const SensorLog unix_ns = read_sensor_file(write_file(dir, "ns.csv", "t,ax,ay,az,gx,gy,gz\n" + ns.str()));
+    REQUIRE(unix_ns.imu.size() == 100);
+    // Seconds near 1.7e9 hold ~0.24 us: the nanoseconds come back within a microsecond.
+    CHECK(std::llabs(unix_ns.imu[0].header.t_ns - 1700000000000000000LL) < 1000);
+    CHECK(std::llabs(unix_ns.imu[1].header.t_ns - unix_ns.imu[0].header.t_ns - 10000000) < 1000);
+    CHECK(has_issue(unix_ns, 2, "is a Unix time in nanoseconds"));
+
+    // One absurd time among times in seconds: that row is skipped, not the clock overflowed.
+    const SensorLog one =
+        read_sensor_file(write_file(dir, "one.csv", "t,ax,ay,az,gx,gy,gz\n" + canonical_rows(3) +
+                                                         "1e12,0,0,9.8,0,0,0\n" + canonical_rows(3, 0.05)));
+    CHECK(one.imu.size() == 6);
+    CHECK(has_issue(one, 5, "is beyond the +-9.2e+09 s a nanosecond clock holds"));
+    for (const auto& r : one.imu) CHECK(r.header.t_ns < 1000000000);
+
+    std::string cr = "t,ax,ay,az,gx,gy,gz\n" + canonical_rows(50);
+    for (auto& c : cr)
+        if (c == '\n') c = '\r';
+    const SensorLog mac = read_sensor_file(write_file(dir, "cr.csv", cr));
+    CHECK(mac.imu.size() == 50);
+    CHECK(mac.issues.empty());
+}
+
+TEST_CASE("regression (issue 18): a quiet, quantised IMU at rest is not called saturated") {
+    // Values on a coarse grid, the gravity axis repeating its maximum: below the 2 g / 2 rad/s floors.
+    const std::string dir = temp_dir();
+    std::ostringstream body;
+    for (int i = 0; i < 1000; ++i)
+        body << i * 0.01 << ",0," << (i % 3 == 0 ? 0.01 : 0.0) << "," << (i % 2 ? 9.81 : 9.80) << ","
+             << (i % 4 == 0 ? 0.002 : 0.0) << ",0,0\n";
+    const SensorLog log = read_sensor_file(write_file(dir, "quiet.csv", "t,ax,ay,az,gx,gy,gz\n" + body.str()));
+    CHECK(log.imu.size() == 1000);
+    CHECK(log.issues.empty());
+}
+
+TEST_CASE("regression (issue 18, fuzz findings 1-3): forced readers on the crashing inputs throw ReadError") {
+    // libFuzzer inputs (fuzz-ci): past the lines in header_of, fields[-1] in parse_scalar.
+    const std::string dir = std::string(PEDNAV_IO_TEST_DATA_DIR) + "/fuzz/";
+    const struct {
+        const char* file;
+        const char* format;
+        const char* reason;
+    } cases[] = {
+        {"read_microstrain_sensorconnect_a-08e8061a.txt", "microstrain-sensorconnect-a", "no header line for format"},
+        {"read_microstrain_sensorconnect_a-df209a7f.txt", "microstrain-sensorconnect-a", "no header line for format"},
+        {"read_microstrain_sensorconnect_b-5361e7c1.txt", "microstrain-sensorconnect-b", "no time column in the header"},
+        {"read_microstrain_sensorconnect_b-e3ee0c26.txt", "microstrain-sensorconnect-b", "no time column in the header"},
+        {"read_pednav_csv-35983d57.txt", "pednav-csv", "no time column: the header lacks t"},
+    };
+    for (const auto& c : cases) {
+        ReadOptions options;
+        options.format = c.format;
+        INFO(c.file);
+        REQUIRE(exists(dir + c.file));
+        try {
+            read_sensor_file(dir + c.file, options);
+            FAIL("no exception");
+        } catch (const ReadError& e) {
+            CHECK(e.reason().find(c.reason) != std::string::npos);
+        }
     }
 }

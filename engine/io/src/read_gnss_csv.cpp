@@ -51,7 +51,7 @@ void read_gnss_csv(const TextFile& file, const GnssReadOptions& options, LogBuil
     const unsigned gnss_bit = stream_bit(stream_gnss);
     Clock clock("gnss");
     size_t counts[3] = {0, 0, 0};
-    size_t no_fix_rows = 0;
+    size_t no_fix_rows = 0, zero_sat_rows = 0, zero_sat_first = 0;
     std::vector<std::string_view> fields;
     std::string problem;
     for (size_t i = header + 1; i < file.lines.size(); ++i) {
@@ -97,6 +97,10 @@ void read_gnss_csv(const TextFile& file, const GnssReadOptions& options, LogBuil
             ++no_fix_rows;
             continue;
         }
+        if (sats == 0.0) {  // a position from no satellite is no fix, whatever `fix` says
+            if (zero_sat_rows++ == 0) zero_sat_first = line;
+            continue;
+        }
         double t = 0, lat = 0, lon = 0;
         for (auto [c, out] : {std::pair<int, double*>{col_t, &t}, {col_lat, &lat}, {col_lon, &lon}}) {
             const NumberStatus st = parse_number(fields[static_cast<size_t>(c)], out);
@@ -131,6 +135,9 @@ void read_gnss_csv(const TextFile& file, const GnssReadOptions& options, LogBuil
     builder.note("time: the column t, in seconds on the IMU log's clock");
     builder.note(accuracy_note(counts, options.uere_m));
     if (no_fix_rows > 0) builder.note(std::to_string(no_fix_rows) + " rows without a fix (fix = 0) skipped");
+    if (zero_sat_rows > 0)
+        builder.issue(zero_sat_first, std::to_string(zero_sat_rows) + " fixes with 0 satellites skipped (first at line " +
+                                          std::to_string(zero_sat_first) + ")");
 }
 
 }  // namespace pednav::io::detail

@@ -51,6 +51,37 @@ std::string detect_gnss_format(const std::string& path) {
     return reader->name;
 }
 
+namespace {
+
+// Consecutive fixes further apart than a pedestrian, or a car, could go:
+// one issue for the file, with the first jump.
+constexpr double kMaxGnssSpeed_mps = 50.0;
+
+void report_jumps(SensorLog& log) {
+    size_t jumps = 0;
+    char first[200] = "";
+    for (size_t i = 1; i < log.gnss.size(); ++i) {
+        const pn_gnss_t& a = log.gnss[i - 1];
+        const pn_gnss_t& b = log.gnss[i];
+        const double dt_s = static_cast<double>(b.header.t_ns - a.header.t_ns) * 1e-9;
+        const double north_m = (b.lat_deg - a.lat_deg) * 111320.0;
+        const double east_m = (b.lon_deg - a.lon_deg) * 111320.0 * std::cos(a.lat_deg * 0.017453292519943295);
+        const double d_m = std::hypot(north_m, east_m);
+        if (dt_s > 0 && d_m / dt_s > kMaxGnssSpeed_mps) {
+            if (jumps++ == 0)
+                std::snprintf(first, sizeof first, "%.0f m in %.3g s at t=%.3f s", d_m, dt_s,
+                              static_cast<double>(b.header.t_ns) * 1e-9);
+        }
+    }
+    if (jumps > 0) {
+        log.issues.push_back({0, "GNSS jumps: " + std::to_string(jumps) + " fixes lie faster than " +
+                                     std::to_string(static_cast<int>(kMaxGnssSpeed_mps)) +
+                                     " m/s from the one before (first: " + first + ")"});
+    }
+}
+
+}  // namespace
+
 SensorLog read_gnss_file(const std::string& path, const GnssReadOptions& options) {
     if (!(options.uere_m > 0.0 && options.uere_m < 1000.0))
         throw ReadError(path, 0, "the UERE must be within 0 .. 1000 m");
@@ -85,6 +116,7 @@ SensorLog read_gnss_file(const std::string& path, const GnssReadOptions& options
                  (automatic ? ", detected" : ", as requested"));
     reader->read(file, options, builder, log);
     builder.finish();
+    report_jumps(log);
     if (log.gnss.empty()) {
         std::string reason = "no GNSS fix could be read";
         if (!log.issues.empty())
@@ -99,6 +131,15 @@ SensorLog read_gnss_file(const std::string& path, const GnssReadOptions& options
 
 void use_gnss(SensorLog& log, const SensorLog& gnss) {
     const size_t own = log.gnss.size();
+    char before_imu[200] = "";
+    if (!log.imu.empty()) {
+        const int64_t t0_ns = log.imu.front().header.t_ns;
+        size_t before = 0;
+        for (const auto& g : gnss.gnss) before += g.header.t_ns < t0_ns ? 1 : 0;
+        if (before > 0)
+            std::snprintf(before_imu, sizeof before_imu, "; %zu of them before the first IMU sample (t = %.3f s)",
+                          before, static_cast<double>(t0_ns) * 1e-9);
+    }
     log.gnss = gnss.gnss;
     for (auto it = log.streams.begin(); it != log.streams.end();) {
         it = it->name == "gnss" ? log.streams.erase(it) : it + 1;
@@ -107,6 +148,7 @@ void use_gnss(SensorLog& log, const SensorLog& gnss) {
     std::string note = "GNSS: " + std::to_string(gnss.gnss.size()) + " fixes from " + gnss.path + " (" +
                        gnss.format + ")";
     if (own > 0) note += ", in place of the " + std::to_string(own) + " GNSS records of the input";
+    note += before_imu;
     log.notes.push_back(note);
     if (log.utc_ns_at_zero == 0) log.utc_ns_at_zero = gnss.utc_ns_at_zero;
 }
