@@ -70,14 +70,14 @@ class LogTest {
             }
         }
         int beforePush = lines.size();
-        assertEquals(9, beforePush); // 4 from init, 4 from create, the loader's warning
+        assertEquals(13, beforePush); // 4 from init, 4 from create, 4 from latency_ns (asked at create), the loader's warning
 
         pushStill(e, 0, 21);
         e.flush();
         assertEquals(2, ofType(e.pollAll(), Position.class).size()); // one per 10 samples
         assertEquals(21, count(lines, "foot/position_filter", "debug at process")); // one call per sample time
         assertEquals(21, count(lines, "foot/position_filter", "error at process"));
-        assertEquals(beforePush + 4 * 21, lines.size());
+        assertEquals(beforePush + 4 * 21 + 4, lines.size()); // and flush's four
         assertEquals(0, count(lines, "foot/position_filter", "debug at destroy"));
 
         // close() on another thread: the destroy lines come on that thread.
@@ -104,16 +104,16 @@ class LogTest {
             ++calls[0];
             throw new IllegalStateException("listener failure " + calls[0]);
         }, fixtureDir("logs_everywhere"))) {
-            assertEquals(9, calls[0]); // as above: init, create, the loader's warning
-            assertEquals(9, e.logListenerFailures());
+            assertEquals(13, calls[0]); // as above: init, create, latency_ns, the loader's warning
+            assertEquals(13, e.logListenerFailures());
             pushStill(e, 0, 35);
             e.flush();
             assertSameOutputs(quiet, e.pollAll());
             assertEquals(3, ofType(quiet, Position.class).size());
-            assertEquals(9 + 4 * 35, calls[0]);
+            assertEquals(13 + 4 * 35 + 4, calls[0]); // and flush's four
             assertEquals(calls[0], e.logListenerFailures());
         }
-        assertEquals(9 + 4 * 35 + 4, calls[0]); // and destroy's four
+        assertEquals(13 + 4 * 35 + 12, calls[0]); // and flush's, destroy's and the library's deinit's four
     }
 
     @Test
