@@ -153,7 +153,7 @@ pn_status_t pn_recording_describe(const pn_recording_t* recording, char* buffer,
         nlohmann::json labels = nlohmann::json::array();
         for (const auto& p : recording->log.truth) labels.push_back(p.label);
         j["truth_labels"] = labels;
-        return write_text(j.dump(), buffer, capacity, size);
+        return write_text(j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), buffer, capacity, size);
     } catch (const std::exception&) {
         return PN_E_INTERNAL;
     }
@@ -161,7 +161,7 @@ pn_status_t pn_recording_describe(const pn_recording_t* recording, char* buffer,
 
 pn_status_t pn_recording_formats(char* buffer, size_t capacity, size_t* size) {
     try {
-        return write_text(nlohmann::json(pednav::io::supported_formats()).dump(), buffer, capacity, size);
+        return write_text(nlohmann::json(pednav::io::supported_formats()).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), buffer, capacity, size);
     } catch (const std::exception&) {
         return PN_E_INTERNAL;
     }

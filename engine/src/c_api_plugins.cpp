@@ -34,7 +34,7 @@ pn_status_t pn_plugins_describe(const char* const* plugin_dirs, uint32_t dir_cou
         for (uint32_t i = 0; i < dir_count; ++i)
             if (plugin_dirs[i]) loader.scan_directory(plugin_dirs[i]);
         if (flags & PN_LIST_OPEN_LIBRARIES) loader.open_all();
-        text = pednav::engine::describe_loader(loader).dump(2);
+        text = pednav::engine::describe_loader(loader).dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
     } catch (const std::bad_alloc&) {
         set_error(err, PN_E_OUT_OF_MEMORY, "plugins_describe", "out of memory");
         return PN_E_OUT_OF_MEMORY;

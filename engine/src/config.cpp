@@ -3,6 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "strict_json.hpp"
+
 namespace pednav::engine {
 
 const char* role_name(Role role) {
@@ -90,11 +92,13 @@ void parse_map(const nlohmann::json& m, EngineConfig& cfg) {
 EngineConfig parse_config(const std::string& text) {
     nlohmann::json doc;
     try {
-        doc = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        fail("", std::string("config is not valid JSON: ") + e.what());
+        doc = parse_strict_json(text);
+    } catch (const StrictJsonError& e) {
+        fail(e.pointer, std::string("config: ") + e.what());
     }
-    if (!doc.is_object()) fail("", "config must be a JSON object");
+    if (!doc.is_object())
+        fail("", std::string("config must be a JSON object, not ") + (doc.is_array() ? "an array" : "a ") +
+                     (doc.is_array() ? "" : doc.type_name()));
     check_keys(doc, "", {"format", "mount", "imu_rate_hz", "pipelines", "description", "input", "origin", "map"});
     // "input" configures the file readers of the tools (format, column map);
     // the engine itself does not read files, but checks it like every key.

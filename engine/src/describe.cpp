@@ -125,7 +125,7 @@ std::string Engine::describe_json() const {
     j["map"] = nullptr;
     if (!map_.format.empty())
         j["map"] = {{"format", map_.format}, {"bytes", map_.bytes.size()}, {"from", map_.label}};
-    return j.dump(2);
+    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 pn_status_t copy_text_out(const std::string& text, char* buffer, size_t capacity, size_t* size) {

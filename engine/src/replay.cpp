@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <pednav/pn_engine.h>
 
+#include "strict_json.hpp"
+
 namespace pednav {
 
 namespace {
@@ -50,9 +52,16 @@ using EnginePtr = std::unique_ptr<pn_engine_t, EngineDeleter>;
 EnginePtr create_engine(const ReplayOptions& options, std::string& error) {
     std::string config = options.config_json;
     if (!options.mount.empty()) {
-        auto doc = nlohmann::json::parse(config, nullptr, false);
-        if (doc.is_discarded()) {
-            error = "config is not valid JSON";
+        nlohmann::json doc;
+        try {
+            doc = engine::parse_strict_json(config);
+        } catch (const engine::StrictJsonError& e) {
+            error = std::string("PN_E_INVALID_CONFIG") + (e.pointer.empty() ? "" : " at " + e.pointer) +
+                    ": config: " + e.what();
+            return nullptr;
+        }
+        if (!doc.is_object()) {
+            error = "PN_E_INVALID_CONFIG: config must be a JSON object";
             return nullptr;
         }
         doc["mount"] = options.mount;
@@ -100,14 +109,22 @@ ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_rec
     if (PN_FAILED(st) && st != PN_E_UNSUPPORTED) result.warnings.push_back("start not applied: " + error_text(err, st));
 
     const size_t total = records.size();
+    // A file of bad records must not print one warning per record: the first
+    // few are listed, the rest counted in one line.
+    constexpr size_t kListedRefusals = 10;
+    size_t refused = 0;
     for (size_t i = 0; i < total; ++i) {
         st = pn_engine_push(engine.get(), records[i], &err);
-        if (PN_FAILED(st)) result.warnings.push_back("record " + std::to_string(i) + ": " + error_text(err, st));
+        if (PN_FAILED(st) && ++refused <= kListedRefusals)
+            result.warnings.push_back("record " + std::to_string(i) + ": " + error_text(err, st));
         if ((i & 1023) == 1023) {
             collect(engine.get(), result);
             if (options.progress) options.progress(i + 1, total, options.progress_user);
         }
     }
+    if (refused > kListedRefusals)
+        result.warnings.push_back(std::to_string(refused - kListedRefusals) + " more records refused (" +
+                                  std::to_string(refused) + " of " + std::to_string(total) + " in all)");
     st = pn_engine_flush(engine.get(), &err);
     if (PN_FAILED(st)) result.warnings.push_back("flush: " + error_text(err, st));
     collect(engine.get(), result);

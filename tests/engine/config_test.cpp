@@ -3,6 +3,8 @@
 // offending key (a JSON pointer into the config).
 #include <doctest/doctest.h>
 
+#include <pthread.h>
+
 #include <fstream>
 
 #include "test_support.hpp"
@@ -156,5 +158,92 @@ TEST_CASE("the engine judges the shared config cases as the config format's JSON
         const auto r = create_fails(doc.dump());
         CHECK_MESSAGE(r.status == PN_E_INVALID_CONFIG, doc.dump());
         CHECK_MESSAGE(r.where == c.at("where").get<std::string>(), doc.dump());
+    }
+}
+
+namespace {
+
+// The config of the counting fixture with `params` spliced in as raw text.
+std::string config_with_params_text(const std::string& params_text) {
+    return "{\"format\": \"pednav-config/1\", \"mount\": \"foot\", \"pipelines\": {\"foot\": {\"step_detector\": "
+           "{\"plugin\": \"org.pednav.test.counting_steps\", \"params\": " +
+           params_text + "}}}}";
+}
+
+struct ThreadResult {
+    std::string config;
+    pn_status_t status = PN_OK;
+    std::string where, message;
+};
+
+void* create_on_thread(void* arg) {
+    auto* r = static_cast<ThreadResult*>(arg);
+    Engine e(r->config, {fixture_dir("good")});
+    r->status = e.status();
+    r->where = e.error().where;
+    r->message = e.error().message;
+    return nullptr;
+}
+
+// Creates the engine on a thread with a stack of `stack_bytes` (a mobile worker's 512 KiB).
+ThreadResult create_on_small_stack(const std::string& config, size_t stack_bytes) {
+    ThreadResult r;
+    r.config = config;
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    pthread_attr_setstacksize(&attr, stack_bytes);
+    pthread_t thread;
+    REQUIRE(pthread_create(&thread, &attr, create_on_thread, &r) == 0);
+    pthread_join(thread, nullptr);
+    pthread_attr_destroy(&attr);
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("regression (issue 18): deep nesting is refused naming where, even on a 512 KiB thread") {
+    const std::string deep_5000 = std::string(5000, '[') + std::string(5000, ']');
+    const ThreadResult params = create_on_small_stack(
+        config_with_params_text("{\"every_n\": 5, \"x\": " + deep_5000 + "}"), 512 * 1024);
+    CHECK(params.status == PN_E_INVALID_CONFIG);
+    CHECK(contains(params.message, "nested deeper than 64 levels"));
+    CHECK(contains(params.where, "/pipelines/foot/step_detector/params/x/0/0/0"));
+
+    std::string text = config_with_params_text("{\"every_n\": 5}");
+    text.insert(1, "\"description\": " + std::string(60000, '[') + std::string(60000, ']') + ", ");
+    const ThreadResult description = create_on_small_stack(text, 512 * 1024);
+    CHECK(description.status == PN_E_INVALID_CONFIG);
+    CHECK(contains(description.where, "/description/0/0"));
+
+    // 60 levels in all are allowed: the bound is not below what a config may need.
+    const ThreadResult shallow = create_on_small_stack(
+        config_with_params_text("{\"every_n\": 5, \"x\": " + std::string(55, '[') + std::string(55, ']') + "}"),
+        512 * 1024);
+    CHECK_FALSE(contains(shallow.message, "nested deeper"));
+}
+
+TEST_CASE("regression (issue 18): duplicate keys, 1e400 and an array config are invalid configs naming the key") {
+    SUBCASE("duplicate key") {
+        Engine e(config_with_params_text("{\"every_n\": 5, \"every_n\": 7}"), {fixture_dir("good")});
+        CHECK(e.status() == PN_E_INVALID_CONFIG);
+        CHECK(std::string(e.error().where) == "/pipelines/foot/step_detector/params/every_n");
+        CHECK(contains(e.error().message, "duplicate key \"every_n\""));
+    }
+    SUBCASE("a number out of range") {
+        Engine e(config_with_params_text("{\"every_n\": 1e400}"), {fixture_dir("good")});
+        CHECK(e.status() == PN_E_INVALID_CONFIG);
+        CHECK(std::string(e.error().where) == "/pipelines/foot/step_detector/params/every_n");
+        CHECK(contains(e.error().message, "out of range"));
+    }
+    SUBCASE("an array") {
+        Engine e("[" + config_with_params_text("{}") + "]", {fixture_dir("good")});
+        CHECK(e.status() == PN_E_INVALID_CONFIG);
+        CHECK(contains(e.error().message, "config must be a JSON object, not an array"));
+    }
+    SUBCASE("ill-formed UTF-8: the message stays printable text") {
+        Engine e(config_with_params_text("{\"every_n\": 5, \"name\": \"a\xff\xfe\"}"), {fixture_dir("good")});
+        CHECK(e.status() == PN_E_INVALID_CONFIG);
+        CHECK(contains(e.error().message, "ill-formed UTF-8"));
+        for (const char* c = e.error().message; *c; ++c) CHECK(static_cast<unsigned char>(*c) < 0x80);
     }
 }

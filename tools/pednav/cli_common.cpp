@@ -54,6 +54,12 @@ std::vector<double> parse_numbers(const std::string& text, size_t count, const s
     return out;
 }
 
+double parse_positive_rate(const std::string& text, const std::string& option) {
+    const double hz = parse_numbers(text, 1, option)[0];
+    if (!(hz > 0.0 && hz <= 100000.0)) throw UsageError(option + " expects a rate in Hz in (0, 100000], got \"" + text + "\"");
+    return hz;
+}
+
 uint64_t parse_count(const std::string& text, const std::string& option) {
     const std::string_view digits = io::trim(text);
     uint64_t v = 0;

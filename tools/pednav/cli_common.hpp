@@ -55,6 +55,8 @@ std::string default_plugin_dir();
 std::string default_config_dir();
 std::string read_text_file(const std::string& path);  // throws std::runtime_error naming the file
 std::vector<double> parse_numbers(const std::string& text, size_t count, const std::string& option);
+// A sample rate in Hz, in (0, 100000]; throws UsageError naming the option.
+double parse_positive_rate(const std::string& text, const std::string& option);
 // A non-negative integer (a seed, a count); throws UsageError naming the option.
 uint64_t parse_count(const std::string& text, const std::string& option);
 

@@ -108,7 +108,7 @@ int pednav_cmd_eval(const std::vector<std::string>& args) {
         if (json) {
             nlohmann::json j = to_json(m);
             if (!map_path.empty()) j["wall_crossings"] = crossings;
-            std::printf("%s\n", j.dump(2).c_str());
+            std::printf("%s\n", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
         } else {
             std::fputs(format_table(m).c_str(), stdout);
             if (!map_path.empty()) std::printf("  wall crossings of the track        %zu\n", crossings);

@@ -14,13 +14,15 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: pednav inspect FILE [--json] [--format NAME] [--column-map FILE.json] [--gap S]\n"
+    "usage: pednav inspect FILE [--json] [--format NAME] [--column-map FILE.json] [--gap S] [--rate HZ]\n"
     "                      [--gnss FILE [--gnss-format auto|nmea|csv]]\n"
     "  what the engine sees in a recording: format, axes, streams and rates, units, gaps, issues;\n"
     "  FILE may also be a GNSS file (NMEA 0183 or a t,lat,lon,... CSV), detected when no other\n"
     "  format matches\n"
     "  --format  the input format (default auto: detected); --column-map for any other CSV\n"
     "  --gap     intervals longer than S seconds are reported as gaps (default 1)\n"
+    "  --rate    the sample rate (Hz) of a packet-counter time column (Xsens PacketCounter without\n"
+    "            SampleTimeFine); wins over a rate in the file's preamble\n"
     "  --gnss    a GNSS file read as `pednav run --gnss` reads it (NMEA's first epoch at the\n"
     "            input's first sample), shown after the input\n";
 
@@ -111,6 +113,8 @@ int pednav_cmd_inspect(const std::vector<std::string>& argv) {
             gnss_options.format = args.value(a);
         else if (a == "--gap")
             options.gap_s = cli::parse_numbers(args.value(a), 1, a)[0];
+        else if (a == "--rate")
+            options.counter_rate_hz = cli::parse_positive_rate(args.value(a), a);
         else if (!a.empty() && a[0] == '-')
             throw cli::UsageError("unknown option " + a + " for inspect");
         else if (path.empty())
@@ -144,7 +148,7 @@ int pednav_cmd_inspect(const std::vector<std::string>& argv) {
                 j["gnss_input"] = io::sensor_log_json(gnss);
                 j["gnss_input"]["format_detected"] = gnss_options.format == "auto";
             }
-            std::cout << j.dump(2) << "\n";
+            std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         } else {
             print_text(log, options.format != "auto" || options.column_map != nullptr);
             if (!gnss_path.empty()) {
@@ -157,7 +161,7 @@ int pednav_cmd_inspect(const std::vector<std::string>& argv) {
         if (json) {
             const nlohmann::json j = {
                 {"path", path}, {"error", {{"file", e.path()}, {"line", e.line()}, {"reason", e.reason()}}}};
-            std::cout << j.dump(2) << "\n";
+            std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         }
         std::fprintf(stderr, "pednav inspect: %s\n", e.what());
         return 1;

@@ -71,7 +71,7 @@ int pednav_cmd_plugins(const std::vector<std::string>& argv) {
     const nlohmann::json j = describe_plugins(dirs, flags);
     if (params_request.asked()) return cli::params_command(j["plugins"], params_request);
     if (json) {
-        std::cout << j.dump(2) << "\n";
+        std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         return 0;
     }
     std::printf("%-44s %-19s %-8s %s\n", "plugin", "kind", "version", "mounts");

@@ -14,6 +14,7 @@
 #include "cli_common.hpp"
 #include "run_pipeline.hpp"
 #include "run_plot.hpp"
+#include "strict_json.hpp"
 
 namespace {
 
@@ -22,11 +23,13 @@ constexpr const char* kUsage =
     "                  [--output track.csv] [--steps FILE] [--start x,y,z] [--heading DEG]\n"
     "                  [--geojson FILE [--geojson-points]] [--gpx FILE] [--geo-csv FILE]\n"
     "                  [--summary FILE] [--plot FILE.svg]\n"
-    "                  [--column-map FILE.json] [--origin lat,lon,height] [--map FILE.geojson]\n"
+    "                  [--column-map FILE.json] [--rate HZ] [--origin lat,lon,height] [--map FILE.geojson]\n"
     "                  [--plugin-dir DIR] [--gnss FILE [--gnss-format auto|nmea|csv] [--gnss-t0 S]\n"
     "                  [--gnss-utc0 UTC] [--gnss-uere M]]\n"
     "  --config  a pednav-config/1 file instead of the mount's preset (configs/<mount>.json)\n"
     "  --format  the input format (default auto: detected); --column-map for any other CSV\n"
+    "  --rate    the sample rate (Hz) of a packet-counter time column (Xsens PacketCounter without\n"
+    "            SampleTimeFine); wins over a rate in the file's preamble\n"
     "  --gnss    GNSS fixes (NMEA 0183 or a t,lat,lon,... CSV) merged with the input in time order,\n"
     "            in place of the input's own; NMEA times go on the input's clock by --gnss-utc0 (the\n"
     "            UTC of t = 0: Unix seconds or 2024-05-01T10:00:00Z) or --gnss-t0 (the t of the\n"
@@ -64,6 +67,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         map_path, gnss_path;
     io::GnssReadOptions gnss_options;
     bool gnss_t0_given = false, geojson_points = false;
+    double counter_rate_hz = 0.0;
     io::Origin origin;
     ReplayOptions options;
     options.plugin_dirs = {cli::default_plugin_dir()};
@@ -73,6 +77,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         else if (a == "--config") config_path = args.value(a);
         else if (a == "--input") input = args.value(a);
         else if (a == "--format") format = args.value(a);
+        else if (a == "--rate") counter_rate_hz = cli::parse_positive_rate(args.value(a), a);
         else if (a == "--output") output = args.value(a);
         else if (a == "--steps") steps = args.value(a);
         else if (a == "--geojson") geojson = args.value(a);
@@ -131,8 +136,8 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     options.config_json = cli::load_config(config_path, mount.empty() ? "foot" : mount);
     options.mount = mount;
     if (origin.known || !map_path.empty()) {  // the options win over the config's own
-        nlohmann::json doc = nlohmann::json::parse(options.config_json, nullptr, false);
-        if (doc.is_discarded() || !doc.is_object()) throw std::runtime_error("config: not a JSON object");
+        nlohmann::json doc = engine::parse_strict_json(options.config_json);  // checked by load_config
+        if (!doc.is_object()) throw std::runtime_error("config: not a JSON object");
         if (origin.known)
             doc["origin"] = {{"lat_deg", origin.lat_deg}, {"lon_deg", origin.lon_deg}, {"height_m", origin.height_m}};
         if (!map_path.empty()) doc["map"] = {{"path", map_path}};
@@ -156,6 +161,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         }
     }
     if (format != "auto") ro.format = format;
+    ro.counter_rate_hz = counter_rate_hz;
     if (!column_map_path.empty()) {
         column_map = nlohmann::json::parse(cli::read_text_file(column_map_path), nullptr, false);
         if (column_map.is_discarded()) throw std::runtime_error(column_map_path + " is not valid JSON");
@@ -204,7 +210,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         std::ofstream out(summary);
         nlohmann::json j = io::run_summary_json(log, r.describe_json, r.positions, r.strides, r.warnings);
         if (!gnss_path.empty()) j["gnss_input"] = io::sensor_log_json(gnss_log);
-        out << j.dump(2) << "\n";
+        out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         if (!out) throw std::runtime_error("cannot write " + summary);
     }
     if (!plot.empty()) {

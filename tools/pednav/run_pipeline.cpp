@@ -6,11 +6,31 @@
 #include <cstdio>
 
 #include "cli_common.hpp"
+#include "strict_json.hpp"
 
 namespace pednav::cli {
 
+namespace {
+// The presets are a few KiB; a config file beyond this is not one.
+constexpr size_t kMaxConfigBytes = size_t{16} << 20;
+}  // namespace
+
 std::string load_config(const std::string& config_path, const std::string& mount) {
-    if (!config_path.empty()) return read_text_file(config_path);
+    if (!config_path.empty()) {
+        std::string text = read_text_file(config_path);
+        if (text.size() > kMaxConfigBytes)
+            throw std::runtime_error("config " + config_path + ": " + std::to_string(text.size()) +
+                                     " bytes, more than the " + std::to_string(kMaxConfigBytes >> 20) +
+                                     " MiB a config may hold");
+        // The engine takes a C string and the tools patch the document: both
+        // need it free of NUL bytes, duplicate keys and runaway nesting.
+        try {
+            engine::parse_strict_json(text);
+        } catch (const engine::StrictJsonError& e) {
+            throw std::runtime_error("config " + config_path + ": " + e.what());
+        }
+        return text;
+    }
     const std::string preset = default_config_dir() + "/" + mount + ".json";
     try {
         return read_text_file(preset);

@@ -22,6 +22,9 @@ const std::vector<FormatReader>& format_readers();
 
 // Index of the first line that is neither blank nor a comment ('#', '%', '//'), or lines.size().
 size_t first_content_line(const TextFile& file);
+// first_content_line, for a reader that needs a header there: throws ReadError
+// naming `format` when the file holds only blank and comment lines.
+size_t header_line_index(const TextFile& file, const char* format);
 
 // Reader entry points, one source file each.
 bool detect_pednav_csv(const TextFile& file);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 namespace pednav::io::detail {
@@ -31,6 +32,13 @@ double median_of(std::vector<double> v) {
     return *mid;
 }
 
+std::vector<double> intervals_of(const std::vector<double>& t) {
+    std::vector<double> dt;
+    dt.reserve(t.size());
+    for (size_t i = 1; i < t.size(); ++i) dt.push_back(t[i] - t[i - 1]);
+    return dt;
+}
+
 double quantile_of(std::vector<double> v, double q) {
     if (v.empty()) return 0.0;
     auto k = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
@@ -52,7 +60,11 @@ const char* stream_name(StreamId s) {
     }
 }
 
-int64_t seconds_to_ns(double t_s) { return static_cast<int64_t>(std::llround(t_s * 1e9)); }
+int64_t seconds_to_ns(double t_s) {
+    // Saturates instead of overflowing; accept_time keeps such times out of a log.
+    if (!(std::fabs(t_s) < kMaxTimeS)) return t_s < 0 ? INT64_MIN : INT64_MAX;
+    return static_cast<int64_t>(std::llround(t_s * 1e9));
+}
 
 LogBuilder::LogBuilder(SensorLog& log, const ReadOptions& options) : log_(log), options_(options) {}
 
@@ -74,6 +86,15 @@ void LogBuilder::bad_row(size_t line, const std::string& message, unsigned strea
 }
 
 bool LogBuilder::accept_time(Clock& clock, size_t line, double t_s, unsigned streams) {
+    if (!(std::fabs(t_s) < kMaxTimeS)) {
+        bad_row(line,
+                fmt("time %.6g s is beyond the +-%.3g s a nanosecond clock holds (a Unix time in ms, us or ns "
+                    "read as seconds?)",
+                    t_s, kMaxTimeS) +
+                    (clock.name.empty() ? std::string() : " in " + clock.name),
+                streams);
+        return false;
+    }
     const int64_t t_ns = seconds_to_ns(t_s);
     if (clock.has_last) {
         if (t_ns < clock.last_t_ns) {
@@ -136,6 +157,12 @@ void LogBuilder::add_mag(size_t line, double t_s, const double m[3]) {
 }
 
 void LogBuilder::add_baro(size_t line, double t_s, double p_pa, double temp_c) {
+    if (!(p_pa > 0.0)) {  // the engine refuses such records one by one: one summary issue at finish
+        if (nonpositive_pressure_.count == 0) nonpositive_pressure_.first_line = line;
+        ++nonpositive_pressure_.count;
+        ++bad_[stream_pressure];
+        return;
+    }
     pn_baro_t r{};
     init_header(r, PN_REC_BARO, seconds_to_ns(t_s));
     r.pressure_pa = p_pa;
@@ -197,15 +224,43 @@ void LogBuilder::pair_accel_gyro() {
     note(text);
 }
 
+double LogBuilder::gap_threshold_s(double median_dt_s) const {
+    // A gap is an interval longer than gap_s and than 2.5 of the stream's own
+    // median intervals: routine 1 Hz GNSS or barometer jitter is no gap.
+    return std::max(options_.gap_s, 2.5 * median_dt_s);
+}
+
 void LogBuilder::report_gaps(StreamId stream, const char* label) {
     context_ = stream_context_[stream];
     const auto& t = times_[stream];
+    const std::vector<double> dt = intervals_of(t);
+    const double median_dt = median_of(dt);
+    const double gap_s = gap_threshold_s(median_dt);
     for (size_t i = 1; i < t.size(); ++i) {
         const double dt = t[i] - t[i - 1];
-        if (dt > options_.gap_s) {
+        if (dt > gap_s) {
             issue(lines_[stream][i],
                   fmt("gap of %.3f s in ", dt) + label + fmt(" (from t=%.3f s to t=%.3f s)", t[i - 1], t[i]));
         }
+    }
+    // Bursts: samples closer than a quarter of the median interval (a logger
+    // flushing a buffer, a second source on the clock), one issue per stream.
+    size_t burst = 0, first = 0, last = 0;
+    double min_dt = median_dt;
+    for (size_t i = 1; i < t.size(); ++i) {
+        if (t[i] - t[i - 1] < 0.25 * median_dt) {
+            if (burst++ == 0) first = lines_[stream][i];
+            last = lines_[stream][i];
+            min_dt = std::min(min_dt, t[i] - t[i - 1]);
+        }
+    }
+    if (burst > 0) {
+        char text[240];
+        std::snprintf(text, sizeof text,
+                      "burst: %zu samples of %s closer than a quarter of the median interval %.4g s (lines "
+                      "%zu-%zu, down to %.3g s apart: %.0f Hz)",
+                      burst, label, median_dt, first, last, min_dt, min_dt > 0 ? 1.0 / min_dt : 0.0);
+        issue(first, text);
     }
 }
 
@@ -290,6 +345,12 @@ void LogBuilder::finish() {
         issue(d.first_line, text);
         note(text);
     }
+    if (nonpositive_pressure_.count > 0) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%zu pressure samples not positive dropped (first at line %zu)",
+                      nonpositive_pressure_.count, nonpositive_pressure_.first_line);
+        issue(nonpositive_pressure_.first_line, text);
+    }
     if (separate_imu_) {
         report_gaps(stream_accel, "accel");
         report_gaps(stream_gyro, "gyro");
@@ -320,14 +381,13 @@ void LogBuilder::finish() {
         if (t.size() >= 2) {
             info.duration_s = t.back() - t.front();
             if (info.duration_s > 0) info.rate_hz = static_cast<double>(t.size() - 1) / info.duration_s;
-            std::vector<double> dt(t.size() - 1);
-            for (size_t i = 1; i < t.size(); ++i) dt[i - 1] = t[i] - t[i - 1];
-            const double dt_median = median_of(std::move(dt));
+            const double dt_median = median_of(intervals_of(t));
             if (dt_median > 0) info.median_rate_hz = 1.0 / dt_median;
             // Truth points are sparse by nature: no gap count for them.
             if (id != stream_truth) {
+                const double gap_s = gap_threshold_s(dt_median);
                 for (size_t i = 1; i < t.size(); ++i) {
-                    if (t[i] - t[i - 1] > options_.gap_s) ++info.gaps;
+                    if (t[i] - t[i - 1] > gap_s) ++info.gaps;
                 }
             }
         }

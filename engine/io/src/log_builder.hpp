@@ -36,6 +36,8 @@ struct Clock {
     int64_t last_t_ns = 0;
 };
 
+// Times in a log are int64 nanoseconds: |t| below this many seconds (~292 years).
+constexpr double kMaxTimeS = 9.2e9;
 int64_t seconds_to_ns(double t_s);
 
 class LogBuilder {
@@ -59,6 +61,7 @@ public:
     void add_accel(size_t line, double t_s, const double accel_mps2[3]);
     void add_gyro(size_t line, double t_s, const double gyro_radps[3]);
     void add_mag(size_t line, double t_s, const double mag_ut[3]);
+    // A pressure that is not positive is dropped and counted (one summary issue at finish).
     void add_baro(size_t line, double t_s, double pressure_pa, double temperature_c);
     void add_gnss(size_t line, double t_s, pn_gnss_t fix);  // keeps fix.header.flags
     void add_truth(size_t line, const TruthPoint& point);
@@ -79,6 +82,7 @@ private:
         double v[3];
     };
     void pair_accel_gyro();
+    double gap_threshold_s(double median_dt_s) const;
     void report_gaps(StreamId stream, const char* label);
     void check_units();
 
@@ -99,6 +103,7 @@ private:
         size_t first_line = 0;
     };
     std::map<std::string, DuplicateCount> duplicates_;
+    DuplicateCount nonpositive_pressure_;
 };
 
 }  // namespace pednav::io::detail

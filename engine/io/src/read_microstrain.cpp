@@ -42,7 +42,7 @@ bool detect_microstrain_a(const TextFile& file) { return has_channel(file, "scal
 bool detect_microstrain_b(const TextFile& file) { return has_channel(file, "estCompensatedAccelX"); }
 
 void read_microstrain(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
-    const size_t index = first_content_line(file);
+    const size_t index = header_line_index(file, "microstrain-sensorconnect");
     const Header h = header_of(file, index);
     TableSpec spec;
     spec.delim = ',';

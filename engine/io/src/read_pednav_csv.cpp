@@ -31,7 +31,7 @@ bool detect_pednav_csv(const TextFile& file) {
 }
 
 void read_pednav_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
-    const size_t index = first_content_line(file);
+    const size_t index = header_line_index(file, "pednav-csv");
     TableSpec spec;
     spec.delim = ',';
     spec.names = header_names(file, index);
@@ -39,6 +39,8 @@ void read_pednav_csv(const TextFile& file, const ReadOptions&, LogBuilder& build
     spec.first_data_index = index + 1;
     spec.time_col = find_column(spec.names, "t");
     spec.empty_cells_mean_absent = true;
+    spec.time_unit_from_magnitude = true;
+    if (spec.time_col < 0) throw ReadError(file.path, index + 1, "no time column: the header lacks t");
     std::string missing;
     for (const char* k : {"ax", "ay", "az", "gx", "gy", "gz"}) {
         if (find_column(spec.names, k) < 0) missing += std::string(missing.empty() ? "" : ", ") + k;

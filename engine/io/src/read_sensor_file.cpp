@@ -84,6 +84,16 @@ size_t first_content_line(const TextFile& file) {
     return file.lines.size();
 }
 
+size_t header_line_index(const TextFile& file, const char* format) {
+    const size_t index = first_content_line(file);
+    if (index >= file.lines.size()) {
+        throw ReadError(file.path, 0,
+                        std::string("no header line for format ") + format +
+                            ": the file holds only blank and comment lines");
+    }
+    return index;
+}
+
 const std::vector<FormatReader>& format_readers() {
     // Detection order: the most specific header first.
     static const std::vector<FormatReader> readers = {

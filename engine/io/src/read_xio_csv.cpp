@@ -53,7 +53,7 @@ bool detect_xio_csv(const TextFile& file) {
 }
 
 void read_xio_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
-    const size_t index = first_content_line(file);
+    const size_t index = header_line_index(file, "xio-ngimu-csv");
     const auto cols = columns_of(file, index);
     TableSpec spec;
     spec.delim = ',';

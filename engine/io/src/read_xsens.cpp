@@ -67,7 +67,7 @@ bool detect_xsens_mtmanager_csv(const TextFile& file) {
     return find_header(file, &h) && h.delim != '\t';
 }
 
-void read_xsens(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
+void read_xsens(const TextFile& file, const ReadOptions& options, LogBuilder& builder, SensorLog& log) {
     XsensHeader h;
     if (!find_header(file, &h))
         throw ReadError(file.path, 0, "no Xsens header (PacketCounter, Acc_X, ...) found");
@@ -85,18 +85,24 @@ void read_xsens(const TextFile& file, const ReadOptions&, LogBuilder& builder, S
         spec.time_scale = 1e-4;
         spec.counter_wrap = 4294967296.0;
         builder.note("time from SampleTimeFine (100 us ticks)");
-    } else if (counter >= 0 && h.rate_hz > 0) {
+    } else if (counter >= 0 && (h.rate_hz > 0 || options.counter_rate_hz > 0)) {
+        const bool given = options.counter_rate_hz > 0;
         spec.time_kind = TableSpec::TimeKind::counter;
         spec.time_col = counter;
-        spec.counter_rate_hz = h.rate_hz;
+        spec.counter_rate_hz = given ? options.counter_rate_hz : h.rate_hz;
         spec.counter_wrap = 65536.0;
-        std::snprintf(text, sizeof text, "time from PacketCounter / %.6g Hz (rate from the file's preamble)",
-                      h.rate_hz);
+        std::snprintf(text, sizeof text, "time from PacketCounter / %.6g Hz (rate %s)", spec.counter_rate_hz,
+                      given ? "given by the user (--rate)" : "from the file's preamble");
         builder.note(text);
+        if (given && h.rate_hz > 0 && h.rate_hz != options.counter_rate_hz) {
+            std::snprintf(text, sizeof text, "the file's preamble says %.6g Hz; the rate given, %.6g Hz, is used",
+                          h.rate_hz, options.counter_rate_hz);
+            builder.issue(h.index + 1, text);
+        }
     } else {
         throw ReadError(file.path, h.index + 1,
                         "Xsens export without SampleTimeFine and without a sample rate line: time unknown "
-                        "(use format column-map with time.rate_hz)");
+                        "(give the rate of PacketCounter with --rate HZ)");
     }
     const char* xyz[3] = {"_X", "_Y", "_Z"};
     for (int i = 0; i < 3; ++i) {

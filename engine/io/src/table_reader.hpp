@@ -33,6 +33,9 @@ struct TableSpec {
     double time_scale = 1.0;     // kSeconds: file unit to s
     double counter_rate_hz = 0;  // kCounter: t = counter / rate
     double counter_wrap = 0;     // kSeconds and kCounter: the raw value wraps at this (0 = never)
+    // kSeconds: the first time tells a Unix time in ms, us or ns written where
+    // seconds belong (1.7e12, 1.7e15, 1.7e18) and sets time_scale for the file.
+    bool time_unit_from_magnitude = false;
 
     Vec3Spec accel, gyro, mag;
     int pressure_col = -1;

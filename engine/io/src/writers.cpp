@@ -247,7 +247,7 @@ void write_geojson(const std::string& path, const std::vector<pn_position_t>& po
         doc["crs_local_enu_m"] = true;
     }
     OutFile out(path);
-    const std::string text = doc.dump(1);
+    const std::string text = doc.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
     std::fwrite(text.data(), 1, text.size(), out.get());
     std::fputc('\n', out.get());
     out.close();

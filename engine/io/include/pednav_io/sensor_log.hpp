@@ -74,6 +74,9 @@ struct ReadOptions {
     const nlohmann::json* column_map = nullptr;  // for format "column-map" (see docs/formats.md)
     double gap_s = 1.0;                          // intervals longer than this are reported as gaps
     size_t max_issues = 200;                     // issues kept in SensorLog::issues; the rest are counted
+    // Sample rate of a packet-counter time column (Xsens PacketCounter), Hz;
+    // 0 = from the file's preamble. Given, it wins over the preamble.
+    double counter_rate_hz = 0.0;
 };
 
 // Fatal: missing, empty, binary or unrecognised file, or no accelerometer and
