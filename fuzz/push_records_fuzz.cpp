@@ -164,7 +164,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     pn_error_t err{};
     err.struct_size = sizeof err;
     RecordSlot slot;
-    for (unsigned op = 0; !in.done() && op < 4096; ++op) {
+    for (unsigned op = 0; !in.done() && op < 256; ++op) {
         switch (in.u8() % 16) {
             case 0: case 1: case 2: case 3: {
                 maker.make(PN_REC_IMU + in.u8() % 4, slot);
@@ -187,7 +187,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             case 12: look(engine, in); break;
             case 13: settings(engine, in, &err); break;
             case 14: maker.jump(static_cast<int64_t>(in.i16()) * 1000000); break;
-            default: maker.jump(static_cast<int64_t>(in.u32()) * 1000000000 * ((in.u8() & 1) != 0 ? -1 : 1)); break;
+            default: maker.jump(static_cast<int64_t>(in.u32()) * 1000000000LL * ((in.u8() & 1) != 0 ? -1 : 1)); break;
         }
     }
     check_status(pn_engine_flush(engine, &err));

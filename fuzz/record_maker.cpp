@@ -8,7 +8,7 @@ namespace pednav::fuzz {
 
 void RecordMaker::advance() {
     // 0.1 ms .. 6.5 s; a zero byte pair repeats the time.
-    t_ns_ += static_cast<int64_t>(in_.u16()) * 100000;
+    jump(static_cast<int64_t>(in_.u16()) * 100000);
 }
 
 double RecordMaker::value(double scale, double offset) {
@@ -65,7 +65,7 @@ void RecordMaker::make(pn_record_type_t type, RecordSlot& slot) {
 
 void RecordMaker::make_walk_imu(uint32_t i, bool still, pn_imu_t& imu) {
     std::memset(&imu, 0, sizeof imu);
-    t_ns_ += 10000000;  // 100 Hz
+    jump(10000000);  // 100 Hz
     const double phase = 2.0 * M_PI * 2.0 * static_cast<double>(i) / 100.0;
     imu.header.struct_size = sizeof imu;
     imu.header.type = PN_REC_IMU;

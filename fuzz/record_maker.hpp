@@ -35,7 +35,9 @@ public:
     // standing, gravity only), no input bytes used.
     void make_walk_imu(uint32_t i, bool still, pn_imu_t& imu);
     // Moves the clock by a signed amount (back in time, repeats, long gaps).
-    void jump(int64_t dt_ns) { t_ns_ += dt_ns; }
+    void jump(int64_t dt_ns) {
+        if (__builtin_add_overflow(t_ns_, dt_ns, &t_ns_)) t_ns_ = dt_ns < 0 ? INT64_MIN : INT64_MAX;
+    }
     int64_t t_ns() const { return t_ns_; }
 
 private:

@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "grid_cell.hpp"
 #include "pednav_indoor_map/geometry_2d.hpp"
 
 namespace pednav::indoor_map {
@@ -14,12 +15,29 @@ namespace {
 uint32_t kind_bit(ZoneKind k) { return 1u << static_cast<int>(k); }
 }  // namespace
 
-ZoneIndex::ZoneIndex(const std::vector<Zone>& zones, double cell_m) : zones_(zones), cell_m_(cell_m) {
-    if (!(cell_m > 0) || !std::isfinite(cell_m)) throw std::invalid_argument("zone index cell size must be positive");
+ZoneIndex::ZoneIndex(const std::vector<Zone>& zones, double cell_m_asked) : zones_(zones) {
+    if (!(cell_m_asked > 0) || !std::isfinite(cell_m_asked))
+        throw std::invalid_argument("zone index cell size must be positive");
     std::map<int, std::vector<uint32_t>> by_floor;
     for (size_t i = 0; i < zones_.size(); ++i)
         if (!zones_[i].rings.empty() && !zones_[i].rings[0].empty())
             by_floor[zones_[i].floor].push_back(static_cast<uint32_t>(i));
+    // One cell side for every floor, bounded by the widest floor's extent.
+    double extent_e_m = 0, extent_n_m = 0;
+    for (const auto& [floor, list] : by_floor) {
+        double e_min = INFINITY, n_min = INFINITY, e_max = -INFINITY, n_max = -INFINITY;
+        for (uint32_t z : list)
+            for (const Point2& p : zones_[z].rings[0]) {
+                e_min = std::min(e_min, p.e_m);
+                e_max = std::max(e_max, p.e_m);
+                n_min = std::min(n_min, p.n_m);
+                n_max = std::max(n_max, p.n_m);
+            }
+        extent_e_m = std::max(extent_e_m, e_max - e_min);
+        extent_n_m = std::max(extent_n_m, n_max - n_min);
+    }
+    cell_m_ = detail::grid_cell_m(cell_m_asked, extent_e_m, extent_n_m);
+    const double cell_m = cell_m_;
     for (const auto& [floor, list] : by_floor) {
         FloorGrid g;
         g.floor = floor;
