@@ -8,14 +8,19 @@
 #                                   the bounded run of every libFuzzer target (label fuzz)
 #   tools/run_tests.sh --tsan       ThreadSanitizer build (preset tsan) in build-tsan/: the tests
 #                                   labelled threads
-#   tools/run_tests.sh --ci         all three in turn (what .ci/run runs), each phase timed
+#   tools/run_tests.sh --fuzz       the same ASan+UBSan build, only the fuzz targets and their bounded
+#                                   runs (label fuzz, about 50 s on 2 cores)
+#   tools/run_tests.sh --ci         what .ci/run runs, each phase timed: the Release build and every
+#                                   test, then --fuzz, then --tsan (the whole suite under ASan+UBSan,
+#                                   --sanitize, does not fit CI's 20 minutes on 2 cores: README
+#                                   "Reliability")
 #   PEDNAV_BUILD_JAVA=OFF tools/run_tests.sh   without the Java binding
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-}"
 case "$mode" in
-  ""|--sanitize|--tsan|--ci) ;;
-  *) echo "usage: tools/run_tests.sh [--sanitize|--tsan|--ci]" >&2; exit 2 ;;
+  ""|--sanitize|--fuzz|--tsan|--ci) ;;
+  *) echo "usage: tools/run_tests.sh [--sanitize|--fuzz|--tsan|--ci]" >&2; exit 2 ;;
 esac
 jobs=$(nproc 2>/dev/null || echo 2)
 java="${PEDNAV_BUILD_JAVA:-ON}"
@@ -44,6 +49,12 @@ phase_sanitize() {
     ctest --test-dir build-asan --output-on-failure -j "$jobs" ${skip:+-LE "$skip"}
 }
 
+phase_fuzz() {
+  cmake --preset asan-ubsan
+  cmake --build build-asan -j "$jobs" --target pednav_fuzzers
+  ctest --test-dir build-asan --output-on-failure -j "$jobs" -L '^fuzz$'
+}
+
 phase_tsan() {
   cmake --preset tsan
   cmake --build build-tsan -j "$jobs" --target pednav_threads_tests
@@ -61,9 +72,10 @@ deps
 case "$mode" in
   "") phase_release ;;
   --sanitize) timed phase_sanitize ;;
+  --fuzz) timed phase_fuzz ;;
   --tsan) timed phase_tsan ;;
   --ci)
     timed phase_release
-    timed phase_sanitize
+    timed phase_fuzz
     timed phase_tsan ;;
 esac
