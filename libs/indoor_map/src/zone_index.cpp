@@ -2,6 +2,7 @@
 #include "pednav_indoor_map/zone_index.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -22,7 +23,8 @@ ZoneIndex::ZoneIndex(const std::vector<Zone>& zones, double cell_m_asked) : zone
     for (size_t i = 0; i < zones_.size(); ++i)
         if (!zones_[i].rings.empty() && !zones_[i].rings[0].empty())
             by_floor[zones_[i].floor].push_back(static_cast<uint32_t>(i));
-    // One cell side for every floor, bounded by the widest floor's extent.
+    // Each floor's bounding box; one cell side for every floor, bounded by the widest.
+    std::map<int, std::array<double, 4>> boxes;  // e_min, n_min, e_max, n_max
     double extent_e_m = 0, extent_n_m = 0;
     for (const auto& [floor, list] : by_floor) {
         double e_min = INFINITY, n_min = INFINITY, e_max = -INFINITY, n_max = -INFINITY;
@@ -33,6 +35,7 @@ ZoneIndex::ZoneIndex(const std::vector<Zone>& zones, double cell_m_asked) : zone
                 n_min = std::min(n_min, p.n_m);
                 n_max = std::max(n_max, p.n_m);
             }
+        boxes[floor] = {e_min, n_min, e_max, n_max};
         extent_e_m = std::max(extent_e_m, e_max - e_min);
         extent_n_m = std::max(extent_n_m, n_max - n_min);
     }
@@ -41,14 +44,7 @@ ZoneIndex::ZoneIndex(const std::vector<Zone>& zones, double cell_m_asked) : zone
     for (const auto& [floor, list] : by_floor) {
         FloorGrid g;
         g.floor = floor;
-        double e_min = INFINITY, n_min = INFINITY, e_max = -INFINITY, n_max = -INFINITY;
-        for (uint32_t z : list)
-            for (const Point2& p : zones_[z].rings[0]) {
-                e_min = std::min(e_min, p.e_m);
-                e_max = std::max(e_max, p.e_m);
-                n_min = std::min(n_min, p.n_m);
-                n_max = std::max(n_max, p.n_m);
-            }
+        const auto [e_min, n_min, e_max, n_max] = boxes[floor];
         g.e0 = e_min;
         g.n0 = n_min;
         g.cols = std::max(1, static_cast<int>(std::ceil((e_max - e_min) / cell_m)) + 1);
