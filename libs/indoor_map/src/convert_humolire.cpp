@@ -41,7 +41,7 @@ std::string humolire_to_geojson(const SourceFile& map_data, const MapConversion&
     json doc;
     try {
         doc = json::parse(map_data.text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, and out_of_range for a number beyond a double
         throw std::runtime_error(map_data.name + ": not JSON: " + e.what());
     }
     if (!doc.is_object()) src.fail("", "not a MapEditor map (a JSON object with \"links\" and \"scale\")");

@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "grid_cell.hpp"
 #include "pednav_indoor_map/geometry_2d.hpp"
 
 namespace pednav::indoor_map {
@@ -20,10 +21,26 @@ int clamp_index(double v, int n) { return std::clamp(static_cast<int>(std::floor
 
 }  // namespace
 
-WallIndex::WallIndex(const std::vector<WallSegment>& walls, double cell_m) : cell_m_(cell_m) {
-    if (!(cell_m > 0) || !std::isfinite(cell_m)) throw std::invalid_argument("wall index cell size must be positive");
+WallIndex::WallIndex(const std::vector<WallSegment>& walls, double cell_m_asked) {
+    if (!(cell_m_asked > 0) || !std::isfinite(cell_m_asked))
+        throw std::invalid_argument("wall index cell size must be positive");
     std::map<int, std::vector<const WallSegment*>> by_floor;
     for (const WallSegment& w : walls) by_floor[w.floor].push_back(&w);
+    // One cell side for every floor, bounded by the widest floor's extent.
+    double extent_e_m = 0, extent_n_m = 0;
+    for (const auto& [floor, list] : by_floor) {
+        double e_min = INFINITY, n_min = INFINITY, e_max = -INFINITY, n_max = -INFINITY;
+        for (const WallSegment* w : list) {
+            e_min = std::min({e_min, w->a.e_m, w->b.e_m});
+            e_max = std::max({e_max, w->a.e_m, w->b.e_m});
+            n_min = std::min({n_min, w->a.n_m, w->b.n_m});
+            n_max = std::max({n_max, w->a.n_m, w->b.n_m});
+        }
+        extent_e_m = std::max(extent_e_m, e_max - e_min + 2 * kMarginM);
+        extent_n_m = std::max(extent_n_m, n_max - n_min + 2 * kMarginM);
+    }
+    cell_m_ = detail::grid_cell_m(cell_m_asked, extent_e_m, extent_n_m);
+    const double cell_m = cell_m_;
     segment_count_ = walls.size();
     for (const auto& [floor, list] : by_floor) {
         FloorGrid g;

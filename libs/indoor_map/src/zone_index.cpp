@@ -2,10 +2,12 @@
 #include "pednav_indoor_map/zone_index.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
 
+#include "grid_cell.hpp"
 #include "pednav_indoor_map/geometry_2d.hpp"
 
 namespace pednav::indoor_map {
@@ -14,15 +16,17 @@ namespace {
 uint32_t kind_bit(ZoneKind k) { return 1u << static_cast<int>(k); }
 }  // namespace
 
-ZoneIndex::ZoneIndex(const std::vector<Zone>& zones, double cell_m) : zones_(zones), cell_m_(cell_m) {
-    if (!(cell_m > 0) || !std::isfinite(cell_m)) throw std::invalid_argument("zone index cell size must be positive");
+ZoneIndex::ZoneIndex(const std::vector<Zone>& zones, double cell_m_asked) : zones_(zones) {
+    if (!(cell_m_asked > 0) || !std::isfinite(cell_m_asked))
+        throw std::invalid_argument("zone index cell size must be positive");
     std::map<int, std::vector<uint32_t>> by_floor;
     for (size_t i = 0; i < zones_.size(); ++i)
         if (!zones_[i].rings.empty() && !zones_[i].rings[0].empty())
             by_floor[zones_[i].floor].push_back(static_cast<uint32_t>(i));
+    // Each floor's bounding box; one cell side for every floor, bounded by the widest.
+    std::map<int, std::array<double, 4>> boxes;  // e_min, n_min, e_max, n_max
+    double extent_e_m = 0, extent_n_m = 0;
     for (const auto& [floor, list] : by_floor) {
-        FloorGrid g;
-        g.floor = floor;
         double e_min = INFINITY, n_min = INFINITY, e_max = -INFINITY, n_max = -INFINITY;
         for (uint32_t z : list)
             for (const Point2& p : zones_[z].rings[0]) {
@@ -31,6 +35,16 @@ ZoneIndex::ZoneIndex(const std::vector<Zone>& zones, double cell_m) : zones_(zon
                 n_min = std::min(n_min, p.n_m);
                 n_max = std::max(n_max, p.n_m);
             }
+        boxes[floor] = {e_min, n_min, e_max, n_max};
+        extent_e_m = std::max(extent_e_m, e_max - e_min);
+        extent_n_m = std::max(extent_n_m, n_max - n_min);
+    }
+    cell_m_ = detail::grid_cell_m(cell_m_asked, extent_e_m, extent_n_m);
+    const double cell_m = cell_m_;
+    for (const auto& [floor, list] : by_floor) {
+        FloorGrid g;
+        g.floor = floor;
+        const auto [e_min, n_min, e_max, n_max] = boxes[floor];
         g.e0 = e_min;
         g.n0 = n_min;
         g.cols = std::max(1, static_cast<int>(std::ceil((e_max - e_min) / cell_m)) + 1);

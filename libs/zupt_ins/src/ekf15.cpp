@@ -28,6 +28,7 @@ namespace {
 // the AVX clones, two SSE2 registers otherwise. Element-wise IEEE arithmetic
 // in the order written, so the results are the bits of the scalar expressions.
 typedef double v4d __attribute__((vector_size(32)));
+typedef long long v4i __attribute__((vector_size(32)));
 
 }  // namespace
 
@@ -35,6 +36,14 @@ typedef double v4d __attribute__((vector_size(32)));
 // functions: a vector passed by value would change the ABI between clones).
 #define ld4(p) (*reinterpret_cast<const v4d*>(p))
 #define st4(p, v) (*reinterpret_cast<v4d*>(p) = (v))
+// Lanes i0..i3 of the eight of (a, b): GCC's __builtin_shuffle takes them as a
+// vector, Clang's __builtin_shufflevector as constants (same lanes, same bits).
+#if defined(__clang__)
+#define shuffle4(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#else
+#define shuffle4(a, b, i0, i1, i2, i3) \
+    __builtin_shuffle(a, b, (__extension__(v4i){i0, i1, i2, i3}))
+#endif
 
 namespace pednav::zupt_ins {
 
@@ -160,8 +169,6 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
     // zeros): lanes over a, the same expressions as scalars.
     alignas(64) double NV[3][12];
     {
-        typedef long long v4i __attribute__((vector_size(32)));
-        const v4i lo = {0, 4, 2, 6}, hi = {1, 5, 3, 7}, first = {0, 1, 4, 5}, second = {2, 3, 6, 7};
         const v4d zero = {0.0, 0.0, 0.0, 0.0};
         const double r00 = Rd[0][0], r01 = Rd[0][1], r02 = Rd[0][2];
         const double r10 = Rd[1][0], r11 = Rd[1][1], r12 = Rd[1][2];
@@ -175,12 +182,12 @@ void Ekf15::propagate(double dt, const Mat3& R, const Vec3& f, const Noise& q) {
                 const v4d m1 = k + 1 < 9 ? ld4(Nm[k + 1] + col) : zero;
                 const v4d m2 = k + 2 < 9 ? ld4(Nm[k + 2] + col) : zero;
                 const v4d m3 = k + 3 < 9 ? ld4(Nm[k + 3] + col) : zero;
-                const v4d u0 = __builtin_shuffle(m0, m1, lo), u1 = __builtin_shuffle(m0, m1, hi);
-                const v4d u2 = __builtin_shuffle(m2, m3, lo), u3 = __builtin_shuffle(m2, m3, hi);
+                const v4d u0 = shuffle4(m0, m1, 0, 4, 2, 6), u1 = shuffle4(m0, m1, 1, 5, 3, 7);
+                const v4d u2 = shuffle4(m2, m3, 0, 4, 2, 6), u3 = shuffle4(m2, m3, 1, 5, 3, 7);
                 v4d* out = part == 0 ? t : e;
-                out[0] = __builtin_shuffle(u0, u2, first);
-                out[1] = __builtin_shuffle(u1, u3, first);
-                out[2] = __builtin_shuffle(u0, u2, second);
+                out[0] = shuffle4(u0, u2, 0, 1, 4, 5);
+                out[1] = shuffle4(u1, u3, 0, 1, 4, 5);
+                out[2] = shuffle4(u0, u2, 2, 3, 6, 7);
             }
             st4(NV[0] + k, fz * t[1] - fy * t[2] + r00 * e[0] + r01 * e[1] + r02 * e[2]);
             st4(NV[1] + k, -fz * t[0] + fx * t[2] + r10 * e[0] + r11 * e[1] + r12 * e[2]);

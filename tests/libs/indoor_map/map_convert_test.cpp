@@ -181,6 +181,16 @@ TEST_CASE("convert: bad sources are named by file and line or JSON pointer") {
           "m.json:/links/0/node0/layer: layer is missing");
     CHECK(error([] { humolire_to_geojson({"m.json", R"({"scale": -1, "links": []})"}, {}); }) ==
           "m.json:/scale: the scale (m per pixel) must be positive");
+    // Found by fuzz_map_humolire: a number beyond a double escaped as nlohmann's out_of_range.
+    CHECK(error([] {
+              try {
+                  humolire_to_geojson({"m.json", R"({"scale": 1e400, "links": []})"}, {});
+              } catch (const std::runtime_error&) {
+                  throw;
+              } catch (...) {
+                  throw std::logic_error("not a std::runtime_error");
+              }
+          }).rfind("m.json: not JSON: ", 0) == 0);
     RairyuuMapFiles f = biba_files();
     f.link.text += "\n900,0,25,99999\n";  // after its 525 links
     CHECK(error([&] { rairyuu_to_geojson(f, {}); }) == "link.txt:527: node 99999 is not in node.txt");

@@ -166,3 +166,29 @@ TEST_CASE("wall index: the first wall a segment meets, as a loop over every wall
     CHECK(mismatches == 0);
     CHECK(hits > 3000);
 }
+
+TEST_CASE("a wall or zone a thousand kilometres wide gets coarser cells and the same answers") {
+    // Found by fuzz_map_geojson: one mistyped longitude (7.85 for 8.85) put a
+    // wall 67 km away and the 2 m grid over that extent took seconds to build;
+    // a degree wider, billions of cells.
+    const std::vector<WallSegment> walls{{{-500000.0, 0.0}, {500000.0, 3.0}, 0, 0},
+                                         {{0.0, -5.0}, {0.0, 400000.0}, 0, 1},
+                                         {{1.0, 1.0}, {3.0, 1.0}, 1, 2}};
+    const WallIndex index(walls, 2.0);
+    CHECK(index.cell_m() > 2.0);
+    CHECK(index.cell_m() < 2.0 * 4096);
+    const Point2 queries[][2] = {{{10.0, -1.0}, {10.0, 1.0}}, {{10.0, 5.0}, {12.0, 7.0}},      {{-1.0, 100.0}, {1.0, 100.0}},
+                                 {{2.0, 0.0}, {2.0, 2.0}},    {{2.0, 1.5}, {2.5, 1.5}},        {{-9e5, -9e5}, {9e5, 9e5}}};
+    for (int floor = 0; floor < 2; ++floor)
+        for (const auto& q : queries) CHECK(index.crosses_wall(floor, q[0], q[1]) == brute_crosses(walls, floor, q[0], q[1]));
+    // A small building's walls keep the cell asked for.
+    const std::vector<WallSegment> room{{{0.0, 0.0}, {30.0, 0.0}, 0, 0}, {{30.0, 0.0}, {30.0, 20.0}, 0, 1}};
+    CHECK(WallIndex(room, 2.0).cell_m() == 2.0);
+
+    Zone wide{ZoneKind::walkable, 0, {{{-400000.0, -1.0}, {400000.0, -1.0}, {400000.0, 300000.0}}}, NAN, 0};
+    const ZoneIndex zones({wide}, 2.0);
+    CHECK(zones.cell_m() > 2.0);
+    CHECK(zones.in_zone(0, {0.0, 0.0}, ZoneKind::walkable));
+    CHECK_FALSE(zones.in_zone(0, {0.0, 200000.0}, ZoneKind::walkable));
+    CHECK(ZoneIndex({Zone{ZoneKind::walkable, 0, {{{0.0, 0.0}, {30.0, 0.0}, {30.0, 20.0}}}, NAN, 0}}, 2.0).cell_m() == 2.0);
+}

@@ -24,6 +24,8 @@ public:
     bool in_zone(int floor, const Point2& p, ZoneKind kind) const { return zone_at(floor, p, kind) != nullptr; }
     // Whether the map has any zone of this kind on this floor.
     bool has_kind(int floor, ZoneKind kind) const;
+    // The cell side in use: the one asked for, or wider over a very large map.
+    double cell_m() const { return cell_m_; }
 
     const std::vector<Zone>& zones() const { return zones_; }
 
