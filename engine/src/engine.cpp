@@ -192,6 +192,17 @@ pn_status_t Engine::check_input(const pn_record_header_t* r, pn_error_t* err) {
                       ", expected at least " + std::to_string(min_record_size(r->type)));
         return PN_E_INVALID_ARGUMENT;
     }
+    // Plugins subtract windows from times and add look-aheads to them; a time
+    // within 2^62 ns (146 years) of zero leaves them that room without overflow.
+    constexpr int64_t kMaxAbsTimeNs = int64_t{1} << 62;
+    if (r->t_ns > kMaxAbsTimeNs || r->t_ns < -kMaxAbsTimeNs) {
+        char msg[160];
+        std::snprintf(msg, sizeof msg, "%s sample at t=%.6g s is outside the engine's clock range of +-2^62 ns (%.4g s)",
+                      record_type_name(r->type), static_cast<double>(r->t_ns) * 1e-9,
+                      static_cast<double>(kMaxAbsTimeNs) * 1e-9);
+        set_error(err, PN_E_INVALID_ARGUMENT, "input", msg);
+        return PN_E_INVALID_ARGUMENT;
+    }
     const bool in_order = r->t_ns >= last_any_t_ns_ && r->t_ns > last_t_ns_[r->type];
     if (in_order && record_values_ok(r)) return PN_OK;
     const ValueProblem bad = find_value_problem(r);

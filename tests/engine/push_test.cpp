@@ -145,6 +145,20 @@ TEST_CASE("time going backwards or repeating is rejected with err.detail = the i
     CHECK(e.describe()["counters"]["records_in"] == 5);
 }
 
+TEST_CASE("a time beyond the engine's clock range (+-2^62 ns) is refused; the stream goes on") {
+    Engine e(steps_config(), {fixture_dir("good")});
+    auto samples = walk(0, 20);
+    pn_error_t err = make_error();
+    pn_imu_t far = samples[0];
+    far.header.t_ns = INT64_MIN + 10000000000;  // a clock near the lowest int64 (found by fuzz_push_records)
+    CHECK(pn_engine_push(e.get(), &far.header, &err) == PN_E_INVALID_ARGUMENT);
+    CHECK(std::string(err.message).find("outside the engine's clock range") != std::string::npos);
+    far.header.t_ns = (int64_t{1} << 62) + 1;
+    CHECK(pn_engine_push(e.get(), &far.header, &err) == PN_E_INVALID_ARGUMENT);
+    CHECK(push(e, samples) == PN_OK);
+    CHECK(e.describe()["counters"]["records_in"] == 20);
+}
+
 TEST_CASE("determinism: the same input gives bit-identical output however it is batched") {
     const std::string config = full_config(3, 0.01);
     Engine a(config, {fixture_dir("good")}), b(config, {fixture_dir("good")});

@@ -17,7 +17,8 @@
  *     (q_enu_from_body rotates a body-frame vector into ENU);
  *   - heading is clockwise from north (azimuth) in radians unless named _deg;
  *   - 3x3 covariances are row-major;
- *   - time is one monotonic clock in nanoseconds (t_ns); never wall clock.
+ *   - time is one monotonic clock in nanoseconds (t_ns); never wall clock. Inputs
+ *     must lie within +-2^62 ns of zero (PN_E_INVALID_ARGUMENT otherwise).
  */
 #ifndef PEDNAV_PN_TYPES_H
 #define PEDNAV_PN_TYPES_H
