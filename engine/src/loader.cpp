@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <set>
 
 #include "library_bounds.hpp"
@@ -153,9 +154,21 @@ std::string untrusted_library(const std::string& dir, const std::string& name) {
 constexpr const char* kNoManifest =
     ": it is opened only when a configured plugin id is in no manifest (pednav_add_plugin writes one)";
 
+// Engines in several threads open and close the same libraries. glibc locks
+// dlopen and dlclose internally, but what they hand back (the link map read by
+// LibraryBounds, the file name from dladdr) is read after that lock is
+// released, while another thread's dlopen of the same file may still be filling
+// it in. One lock per process around opening, checking and closing a library
+// makes those reads ordered.
+std::mutex& library_mutex() {
+    static std::mutex m;
+    return m;
+}
+
 }  // namespace
 
 Loader::~Loader() {
+    const std::lock_guard<std::mutex> lock(library_mutex());
     for (auto it = libraries_.rbegin(); it != libraries_.rend(); ++it) {
         if (it->init_done && it->library->deinit) it->library->deinit();
         if (it->handle) dlclose(it->handle);
@@ -309,6 +322,7 @@ void Loader::refuse(size_t index, pn_status_t status, const std::string& reason)
 
 void Loader::open_library(size_t index) {
     if (libraries_[index].library || libraries_[index].refused) return;
+    const std::lock_guard<std::mutex> lock(library_mutex());
     const std::string path = libraries_[index].path;
     dlerror();
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);

@@ -20,8 +20,9 @@ class OutputQueue {
 public:
     explicit OutputQueue(size_t capacity) : slots_(capacity ? capacity : 8192) {}
 
-    // Copies the record, stamping its header's source_id.
-    void push(const pn_record_header_t* r, uint32_t source_id) {
+    // Copies the record, stamping its header's source_id; false when the
+    // queue is full and the record was dropped (counted in dropped()).
+    bool push(const pn_record_header_t* r, uint32_t source_id) {
         if (r->type < PN_REC_TYPE_COUNT) {
             copy_record(latest_[r->type].bytes, r);
             latest_[r->type].header.source_id = source_id;
@@ -30,12 +31,13 @@ public:
         const uint64_t tail = tail_.load(std::memory_order_relaxed);
         if (tail - head_.load(std::memory_order_acquire) >= slots_.size()) {
             ++dropped_;
-            return;
+            return false;
         }
         pn_output_t& slot = slots_[tail % slots_.size()];
         copy_record(slot.bytes, r);
         slot.header.source_id = source_id;
         tail_.store(tail + 1, std::memory_order_release);
+        return true;
     }
     bool pop(pn_output_t* out) {
         const uint64_t head = head_.load(std::memory_order_relaxed);

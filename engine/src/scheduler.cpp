@@ -49,6 +49,20 @@ void Stage::clear_segment() {
     for (auto& in : feedback) in.cursor = 0;
 }
 
+// A full output queue loses outputs the app has not polled: said at the 1st,
+// 2nd, 4th, 8th ... drop so that a consumer that keeps falling behind is heard
+// without one line per record.
+void Scheduler::warn_outputs_dropped() noexcept {
+    const uint64_t n = outputs_.dropped();
+    if ((n & (n - 1)) != 0) return;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "the output queue is full (%zu records): %llu output%s dropped so far; poll more often or "
+                  "raise output_queue_capacity",
+                  outputs_.capacity(), static_cast<unsigned long long>(n), n == 1 ? "" : "s");
+    diagnostics_.warn("engine", line);
+}
+
 Scheduler::Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity, Diagnostics& diagnostics)
     : stages_(std::move(stages)),
       outputs_(output_capacity),
@@ -167,7 +181,8 @@ pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
         stored->source_id = static_cast<uint32_t>(q);
     }
     last_of_type = r->t_ns;
-    if (final_producer_mask_[s.index] & output_mask() & bit) outputs_.push(r, static_cast<uint32_t>(q));
+    if ((final_producer_mask_[s.index] & output_mask() & bit) && !outputs_.push(r, static_cast<uint32_t>(q)))
+        warn_outputs_dropped();
     ++s.records_out;
     return PN_OK;
 }

@@ -157,6 +157,7 @@ private:
     pn_status_t refuse(Stage& s, pn_status_t status);  // logs s.sink_problem as misbehaviour
     void release_consumed();
     int64_t checked_latency(const Stage& s) const;
+    void warn_outputs_dropped() noexcept;
 
     std::vector<std::unique_ptr<Stage>> stages_;
     std::vector<RecordQueue> queues_;      // 0 = app, k+1 = stage k

@@ -271,6 +271,12 @@ TEST_CASE("output mask, get_latest and a full output queue") {
     REQUIRE(pn_engine_flush(e.get(), nullptr) == PN_OK);
     // 10 positions, room for 4: the newest 6 are dropped and counted ...
     CHECK(e.describe()["counters"]["outputs_dropped"] == 6);
+    // ... and said at the 1st, 2nd and 4th drop, not once per record.
+    const auto warnings = e.describe()["warnings"];
+    size_t full = 0;
+    for (const auto& w : warnings)
+        if (w.get<std::string>().find("the output queue is full (4 records)") != std::string::npos) ++full;
+    CHECK(full == 3);
     // ... but get_latest still sees the newest.
     pn_output_t latest;
     REQUIRE(pn_engine_get_latest(e.get(), PN_REC_POSITION, &latest) == PN_OK);
