@@ -24,6 +24,14 @@ namespace pednav::io::detail {
 
 namespace {
 
+// "POSI <counter>": the counter as the file gives it, whole; a counter no
+// integer type holds (a corrupt line) is printed as a number, not converted.
+std::string posi_name(double counter) {
+    char name[64];
+    std::snprintf(name, sizeof name, "POSI %.0f", std::trunc(counter) + 0.0);
+    return name;
+}
+
 struct RawLine {
     size_t line;
     double app_s, sensor_s;
@@ -216,7 +224,7 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
                              0.0,
                              static_cast<int>(std::lround(p.floor)),
                              false,
-                             "POSI " + std::to_string(static_cast<long long>(p.counter))};
+                             posi_name(p.counter)};
             builder.add_truth(p.line, point);
         }
         builder.set_units(stream_truth, "deg", "m (ENU from the first POSI)");
