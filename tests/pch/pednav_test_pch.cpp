@@ -1,0 +1,2 @@
+// SPDX-License-Identifier: Apache-2.0
+// The translation unit that builds the test suite's precompiled header (tests/CMakeLists.txt).
