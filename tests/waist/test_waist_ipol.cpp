@@ -50,7 +50,7 @@ TEST_CASE("issue 14: ipol lower back: steps against the annotated footsteps of b
         CAPTURE(r.footsteps);
         CAPTURE(r.uturn_deg);
         CHECK(d <= 2);
-        CHECK(std::abs(r.uturn_deg - 180.0) < 10.0);
+        CHECK(std::abs(r.uturn_deg - 180.0) < 8.0);  // the issue's 10 deg; worst measured 7.2 deg (15-1)
         within_one += d <= 1;
         sum_abs += d;
         worst = std::max(worst, static_cast<double>(d));

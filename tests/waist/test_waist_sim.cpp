@@ -95,10 +95,10 @@ TEST_CASE("issue 14: simulated outdoor_indoor: under the fixes' accuracy with GN
         CHECK(n_gnss > 50);
         CHECK(err_gnss < mean_accuracy_m(out.gnss));
         CHECK(d.walked_m > 70.0);
-        // The issue's target, 2 %; measured 1.67, 0.71 and 1.58 % (seeds 4
-        // and 5: 1.64, 1.70 %), mostly the 2.3 % longer steps of the
-        // simulated walker indoors than on the 50 m outdoors.
-        CHECK(d.max_m < 0.02 * d.walked_m);
+        // The issue's target, 2 %; measured 1.02, 0.83 and 1.59 %, mostly
+        // the 2.3 % longer steps of the simulated walker indoors than on the
+        // 50 m outdoors (docs/waist-pipeline.md).
+        CHECK(d.max_m < 0.018 * d.walked_m);
         drift_pct.push_back(100.0 * d.max_m / d.walked_m);
         gnss_err.push_back(err_gnss);
         // Steps alone indoors, GNSS outdoors before and after.
@@ -180,9 +180,10 @@ TEST_CASE("issue 14: simulated long outdoor walk with a 60 s GNSS outage: drift 
         CAPTURE(err_gnss);
         CHECK(gap.second - gap.first > 59.0);
         CHECK(d.walked_m > 70.0);
-        // The issue's target is 2 %; measured 2.05, 2.26 and 1.58 % (the
-        // walking direction off by 0.5-1.7 deg over the outage).
-        CHECK(d.max_m < 0.024 * d.walked_m);
+        // The issue's target is 2 %; measured 0.58, 1.43 and 0.73 % (2.05,
+        // 2.26 and 1.58 % before the magnetometer's compass deviation and
+        // the fixes' correlated error were estimated).
+        CHECK(d.max_m < 0.016 * d.walked_m);
         CHECK(err_gnss < mean_accuracy_m(out.gnss));
         drift_pct.push_back(100.0 * d.max_m / d.walked_m);
         gnss_err.push_back(err_gnss);
@@ -229,5 +230,5 @@ TEST_CASE("simulated building tour: turns on the spot in pauses keep the walking
         worst_deg = std::max(worst_deg, std::abs(std::remainder(p.heading_rad * 180 / M_PI - out.truth[i].heading_deg, 360.0)));
     }
     MESSAGE("building tour, walking direction against the truth at every step: worst " << worst_deg << " deg");
-    CHECK(worst_deg < 10.0);
+    CHECK(worst_deg < 5.0);  // measured 3.25 deg
 }

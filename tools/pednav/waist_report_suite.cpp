@@ -15,6 +15,9 @@ namespace pednav::cli {
 
 namespace {
 
+// Seeds of every simulated walk (the tests run 1-3).
+constexpr uint64_t kSeeds = 8;
+
 void print_spread(const char* what, std::vector<double> v) {
     std::printf("%s: mean %.2f median %.2f worst %.2f (%zu)\n", what,
                 v.empty() ? NAN : [&] {
@@ -64,7 +67,7 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
 
     std::vector<double> closures;
     const sim::Route loop = sim::builtin_route("corridor_loop");
-    for (uint64_t seed = 1; seed <= 5; ++seed) {
+    for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
         const sim::SimOutput out = sim::simulate(loop, waist_options(seed, false));
         const auto errors = waist_eval::output_errors(waist_eval::run_sim_waist(out, loop, waist, plugin_dirs), out);
         const double pct = errors.empty() ? NAN : 100.0 * errors.back().err_h_m / out.distance_m;
@@ -77,7 +80,7 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
     const sim::Route oi = sim::builtin_route("outdoor_indoor"), block = waist_eval::block_laps_route();
     for (const sim::Route* route : {&oi, &block}) {
         std::vector<double> drift, without_scale, gnss_err;
-        for (uint64_t seed = 1; seed <= 5; ++seed) {
+        for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
             sim::SimOutput out = sim::simulate(*route, waist_options(seed, true));
             if (route == &block)
                 waist_eval::remove_fixes(out, waist_eval::kBlockOutageStartS, waist_eval::kBlockOutageEndS);
@@ -110,7 +113,7 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
     }
 
     const sim::Route stairs = sim::builtin_route("stairs");
-    for (uint64_t seed = 1; seed <= 5; ++seed) {
+    for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
         const sim::SimOutput out = sim::simulate(stairs, waist_options(seed, false));
         const waist_eval::StairsScore s =
             waist_eval::stairs_score(waist_eval::run_sim_waist(out, stairs, waist, plugin_dirs), out);

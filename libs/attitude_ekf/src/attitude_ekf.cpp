@@ -11,9 +11,12 @@
 namespace pednav::attitude_ekf {
 
 using Mat3 = Eigen::Matrix3d;
-using Vec9 = Eigen::Matrix<double, 9, 1>;
+using MatP = AttitudeEkf::MatP;
+using VecX = AttitudeEkf::VecX;
 
 namespace {
+constexpr int kN = AttitudeEkf::kStates;
+
 const AttitudeEkfConfig& checked(const AttitudeEkfConfig& c) {
     if (!(c.align_still_s > 0) || !(c.align_timeout_s > 0))
         throw std::invalid_argument("align_still_s and align_timeout_s must be > 0");
@@ -21,6 +24,8 @@ const AttitudeEkfConfig& checked(const AttitudeEkfConfig& c) {
     if (!(c.gravity_sd_quiet_mps2 > 0) || !(c.gravity_sd_moving_mps2 > 0) || !(c.still_bias_sd_radps > 0) ||
         !(c.mag_heading_sd_rad > 0))
         throw std::invalid_argument("measurement sds must be > 0");
+    if (!(c.mag_deviation_sd_rad >= 0) || !(c.mag_deviation_walk_rad_per_sqrts >= 0))
+        throw std::invalid_argument("mag_deviation_sd_rad and mag_deviation_walk_rad_per_sqrts must be >= 0");
     if (!(c.max_dt_s > 0)) throw std::invalid_argument("max_dt_s must be > 0");
     if (!(c.mag_gate_chi2 > 0) || c.mag_max_rejections < 1)
         throw std::invalid_argument("mag_gate_chi2 must be > 0 and mag_max_rejections >= 1");
@@ -43,12 +48,17 @@ void AttitudeEkf::align(const Vec3& f_mean, const Vec3& w_mean, bool bias_from_s
     }
     q_ = navmath::level_attitude(f_mean, yaw_rad);
     if (bias_from_still) bg_ = w_mean;
-    P_.setZero();
-    P_.diagonal() << c_.init_tilt_sd_rad * c_.init_tilt_sd_rad, c_.init_tilt_sd_rad * c_.init_tilt_sd_rad,
-        c_.init_heading_sd_rad * c_.init_heading_sd_rad, Vec3::Constant(c_.init_gyro_bias_sd_radps *
-                                                                         c_.init_gyro_bias_sd_radps),
-        Vec3::Constant(c_.init_accel_bias_sd_mps2 * c_.init_accel_bias_sd_mps2);
+    reset_covariance();
     aligned_ = true;
+}
+
+void AttitudeEkf::reset_covariance() {
+    P_.setZero();
+    const double t = c_.init_tilt_sd_rad * c_.init_tilt_sd_rad;
+    const double g = c_.init_gyro_bias_sd_radps * c_.init_gyro_bias_sd_radps;
+    const double a = c_.init_accel_bias_sd_mps2 * c_.init_accel_bias_sd_mps2;
+    const double d = c_.mag_deviation_sd_rad * c_.mag_deviation_sd_rad;
+    P_.diagonal() << t, t, c_.init_heading_sd_rad * c_.init_heading_sd_rad, g, g, g, a, a, a, d, d;
 }
 
 bool AttitudeEkf::on_imu(int64_t t_ns, const Vec3& a, const Vec3& w) {
@@ -97,8 +107,10 @@ void AttitudeEkf::propagate(const Vec3& w, double dt) {
     P_.block<3, 3>(0, 0) += B * Pag.transpose() + Pag * B.transpose() + BPgg * B.transpose();
     P_.block<3, 3>(0, 3) += BPgg;
     P_.block<3, 3>(0, 6) += B * Pgb;
+    P_.block<3, 2>(0, 9) += B * P_.block<3, 2>(3, 9);  // the deviation's block of Phi is I
     P_.block<3, 3>(3, 0) = P_.block<3, 3>(0, 3).transpose();
     P_.block<3, 3>(6, 0) = P_.block<3, 3>(0, 6).transpose();
+    P_.block<2, 3>(9, 0) = P_.block<3, 2>(0, 9).transpose();
     const double qa = c_.gyro_noise_radps_per_sqrthz * c_.gyro_noise_radps_per_sqrthz * dt;
     const double qg = c_.gyro_bias_walk_radps_per_sqrts * c_.gyro_bias_walk_radps_per_sqrts * dt;
     const double qb = c_.accel_bias_walk_mps2_per_sqrts * c_.accel_bias_walk_mps2_per_sqrts * dt;
@@ -106,6 +118,11 @@ void AttitudeEkf::propagate(const Vec3& w, double dt) {
         P_(i, i) += qa;
         P_(3 + i, 3 + i) += qg;
         P_(6 + i, 6 + i) += qb;
+    }
+    if (c_.mag_deviation_sd_rad > 0) {
+        const double qd = c_.mag_deviation_walk_rad_per_sqrts * c_.mag_deviation_walk_rad_per_sqrts * dt;
+        P_(9, 9) += qd;
+        P_(10, 10) += qd;
     }
 }
 
@@ -140,7 +157,7 @@ void AttitudeEkf::end_window() {
     win_still_ = true;
 
     // Gravity: y = [f_E, f_N] = H dx.
-    Eigen::Matrix<double, 2, 9> H = Eigen::Matrix<double, 2, 9>::Zero();
+    Eigen::Matrix<double, 2, kN> H = Eigen::Matrix<double, 2, kN>::Zero();
     H(0, 1) = -g_mps2_;
     H(1, 0) = g_mps2_;
     H.block<1, 3>(0, 6) = R.row(0);
@@ -149,28 +166,29 @@ void AttitudeEkf::end_window() {
     update<2>(Eigen::Vector2d(f.x(), f.y()), H, sd * sd);
     // Still: y = mean w_m - bg = dbg.
     if (still) {
-        Eigen::Matrix<double, 3, 9> Hb = Eigen::Matrix<double, 3, 9>::Zero();
+        Eigen::Matrix<double, 3, kN> Hb = Eigen::Matrix<double, 3, kN>::Zero();
         Hb.block<3, 3>(0, 3).setIdentity();
         update<3>(w_mean - bg_, Hb, c_.still_bias_sd_radps * c_.still_bias_sd_radps);
     }
 }
 
 template <int M>
-void AttitudeEkf::update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, 9>& H, double r_var) {
-    const Eigen::Matrix<double, 9, M> PHt = P_ * H.transpose();
+void AttitudeEkf::update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kN>& H, double r_var) {
+    const Eigen::Matrix<double, kN, M> PHt = P_ * H.transpose();
     Eigen::Matrix<double, M, M> S = H * PHt;
     S.diagonal().array() += r_var;
-    const Eigen::Matrix<double, 9, M> K = PHt * S.inverse();
+    const Eigen::Matrix<double, kN, M> K = PHt * S.inverse();
     apply(K * y);
     // Joseph form keeps P symmetric and positive.
-    const Mat9 IKH = Mat9::Identity() - K * H;
+    const MatP IKH = MatP::Identity() - K * H;
     P_ = IKH * P_ * IKH.transpose() + r_var * K * K.transpose();
 }
 
-void AttitudeEkf::apply(const Vec9& dx) {
+void AttitudeEkf::apply(const VecX& dx) {
     q_ = navmath::quat_mul_unit(navmath::quat_exp(dx.head<3>()), q_);
     bg_ += dx.segment<3>(3);
-    ba_ += dx.tail<3>();
+    ba_ += dx.segment<3>(6);
+    dev_ += dx.tail<2>();
 }
 
 void AttitudeEkf::rotate_yaw(double delta_heading_rad) {
@@ -187,12 +205,19 @@ void AttitudeEkf::on_mag(int64_t t_ns, const Vec3& m) {
     if (t_ns - t_last_mag_update_ns_ < static_cast<int64_t>(c_.mag_update_s * 1e9)) return;
     t_last_mag_update_ns_ = t_ns;
     const double psi_mag = navmath::magnetic_heading(up_b, m) + c_.declination_deg * kDeg;
-    const double y = navmath::wrap_pi(psi_mag - navmath::heading_of(q_));
+    const double psi = navmath::heading_of(q_), sin_psi = std::sin(psi), cos_psi = std::cos(psi);
+    const double y = navmath::wrap_pi(psi_mag - psi - dev_(0) * sin_psi - dev_(1) * cos_psi);
+    Eigen::Matrix<double, 1, kN> H = Eigen::Matrix<double, 1, kN>::Zero();
+    H(0, 2) = -1.0;
+    if (c_.mag_deviation_sd_rad > 0) {
+        H(0, 9) = sin_psi;
+        H(0, 10) = cos_psi;
+    }
     // A field the gate lets through may still be disturbed (a magnet can
     // keep the strength and dip): heading innovations beyond mag_gate_chi2
     // are rejected, unless mag_max_rejections in a row say the heading is
     // what is wrong.
-    const double s2 = P_(2, 2) + c_.mag_heading_sd_rad * c_.mag_heading_sd_rad;
+    const double s2 = (H * P_ * H.transpose())(0, 0) + c_.mag_heading_sd_rad * c_.mag_heading_sd_rad;
     const bool outlier = y * y > c_.mag_gate_chi2 * s2;
     if (outlier && yaw_source_ == YawSource::magnetometer && ++mag_rejections_ < c_.mag_max_rejections) return;
     mag_rejections_ = 0;
@@ -204,8 +229,6 @@ void AttitudeEkf::on_mag(int64_t t_ns, const Vec3& m) {
         P_(2, 2) = c_.mag_heading_sd_rad * c_.mag_heading_sd_rad;
         yaw_source_ = YawSource::magnetometer;
     } else {
-        Eigen::Matrix<double, 1, 9> H = Eigen::Matrix<double, 1, 9>::Zero();
-        H(0, 2) = -1.0;
         update<1>(Eigen::Matrix<double, 1, 1>(y), H, c_.mag_heading_sd_rad * c_.mag_heading_sd_rad);
     }
     mag_used_ = true;
@@ -224,11 +247,7 @@ void AttitudeEkf::set_attitude(const Quat& q) {
     yaw_source_ = YawSource::app;
     if (!aligned_) {
         aligned_ = true;
-        P_.setZero();
-        P_.diagonal() << c_.init_tilt_sd_rad * c_.init_tilt_sd_rad, c_.init_tilt_sd_rad * c_.init_tilt_sd_rad,
-            c_.init_heading_sd_rad * c_.init_heading_sd_rad,
-            Vec3::Constant(c_.init_gyro_bias_sd_radps * c_.init_gyro_bias_sd_radps),
-            Vec3::Constant(c_.init_accel_bias_sd_mps2 * c_.init_accel_bias_sd_mps2);
+        reset_covariance();
     }
 }
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Waist (belt) attitude estimator: quaternion strapdown with the 9-state
-// error EKF of pednav_attitude_ekf (attitude, gyro bias, accelerometer bias),
-// one PN_REC_ATTITUDE per IMU sample once aligned. Yaw from the
-// magnetometer while its field agrees with the local one
+// error EKF of pednav_attitude_ekf (attitude, gyro bias, accelerometer bias,
+// and the magnetometer's compass deviation), one PN_REC_ATTITUDE per IMU
+// sample once aligned. Yaw from the magnetometer while its field agrees with
+// the local one
 // (PN_ATTITUDE_FLAG_MAG_USED on the records after a correction), else the
 // config's initial heading, a GNSS course, or the app (set_attitude).
 #include <cmath>
@@ -22,12 +23,12 @@ public:
     static constexpr const char* kId = "org.pednav.waist.attitude.ekf9";
     static constexpr const char* kVendor = "pednav";
     static constexpr const char* const kFeatures[] = {"mount:waist", "uses:mag", "uses:gnss", nullptr};
-    static constexpr const char* kName = "waist attitude, 9-state error EKF";
-    static constexpr const char* kVersion = "1.0.0";
+    static constexpr const char* kName = "waist attitude, 9-state error EKF and compass deviation";
+    static constexpr const char* kVersion = "1.1.0";
     static constexpr const char* kDescription =
         "quaternion strapdown, error EKF of attitude, gyro bias and accelerometer bias (waist paper sec. 4.2-4.3, "
         "eq. 4.2-4.10): roll and pitch from gravity, gyro bias from still periods, heading from a gated "
-        "magnetometer; no gyrocompassing";
+        "magnetometer whose hard-iron compass deviation is estimated as the walker turns; no gyrocompassing";
     static constexpr const char* kParamsSchema = R"json({
   "type": "object", "additionalProperties": false,
   "properties": {
@@ -67,8 +68,12 @@ public:
       "description": "heading from the magnetometer while mag_* accept its field"},
     "declination_deg": {"type": "number", "x-unit": "deg", "minimum": -180, "maximum": 180, "default": 0,
       "description": "magnetic declination, east positive: true heading = magnetic + declination"},
-    "mag_heading_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 1e-6, "maximum": 4, "default": 0.5,
-      "description": "sd of one magnetometer heading; large because its errors (hard iron, nearby steel) are correlated from one update to the next: the gyro carries the heading between, the magnetometer holds it over minutes"},
+    "mag_heading_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 1e-6, "maximum": 4, "default": 0.2,
+      "description": "sd of one magnetometer heading after the deviation; large because what is left (nearby steel, soft iron) is correlated from one update to the next: the gyro carries the heading between, the magnetometer holds it over minutes"},
+    "mag_deviation_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 0, "maximum": 1, "default": 0.05,
+      "description": "P0 of the compass deviation B sin(psi) + C cos(psi) of the sensor's own hard-iron field (B and C are estimated as the walker turns); 0 = not estimated"},
+    "mag_deviation_walk_rad_per_sqrts": {"type": "number", "x-unit": "rad/sqrt(s)", "minimum": 0, "maximum": 1, "default": 0.0001,
+      "description": "random walk of B and C (the sensor's magnetisation and its tilt on the belt change)"},
     "mag_update_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 60, "default": 0.5,
       "description": "at most one magnetometer update per this long (its errors are correlated in time)"},
     "mag_gate_chi2": {"type": "number", "minimum": 0.01, "maximum": 1e6, "default": 9,
@@ -136,4 +141,4 @@ private:
 
 }  // namespace
 
-PEDNAV_PLUGIN_LIBRARY("org.pednav.waist.attitude", "1.0.0", WaistAttitudeEkf)
+PEDNAV_PLUGIN_LIBRARY("org.pednav.waist.attitude", "1.1.0", WaistAttitudeEkf)

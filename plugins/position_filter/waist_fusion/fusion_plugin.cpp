@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Waist (belt) position filter: the step/GNSS fusion EKF of pednav_pdr_fusion
-// (state [E, N, speed, altitude, heading, step length]) predicted per step
+// (state [E, N, speed, altitude, heading, step length], and the GNSS fixes'
+// error correlated over tens of seconds) predicted per step
 // with the step-length model of pednav_pdr and the attitude's heading change,
 // corrected by GNSS fixes (in the engine's ENU frame, through its geodetic
 // origin) and the barometer; GNSS alone, fused or steps alone by the fixes'
@@ -42,10 +43,11 @@ public:
     static constexpr const char* const kFeatures[] = {"mount:waist", "needs:step", "needs:attitude", "uses:gnss",
                                                       "uses:baro", nullptr};
     static constexpr const char* kName = "waist step/GNSS fusion EKF";
-    static constexpr const char* kVersion = "1.0.0";
+    static constexpr const char* kVersion = "1.1.0";
     static constexpr const char* kDescription =
-        "6-state EKF [E, N, speed, altitude, heading, step length] per step (waist paper sec. 4.4, eq. 4.14-4.22 "
-        "with one heading convention), step length L = k (amax - amin)^(1/b) + beta, GNSS position and velocity "
+        "EKF [E, N, speed, altitude, heading, step length] per step (waist paper sec. 4.4, eq. 4.14-4.22 "
+        "with one heading convention) and the fixes' correlated error (Gauss-Markov), step length "
+        "L = k (amax - amin)^(1/b) + beta, GNSS position and velocity "
         "behind an innovation gate, barometric altitude; GNSS alone, fused or steps alone by fix quality";
     static constexpr const char* kParamsSchema = R"json({
   "type": "object", "additionalProperties": false,
@@ -72,8 +74,8 @@ public:
       "description": "process noise of the altitude per step (w_A)"},
     "heading_sd_rad": {"type": "number", "x-unit": "rad", "minimum": 0, "maximum": 1, "default": 0.001,
       "description": "process noise of the walking direction per step (w_psi)"},
-    "step_length_sd_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 1, "default": 0.002,
-      "description": "process noise of the step length's offset from the model per step (w_L)"},
+    "step_length_sd_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 1, "default": 0.0005,
+      "description": "process noise of the step length's offset from the model per step (w_L): how fast the model's error for this walker changes"},
     "model_speed_sd_mps": {"type": "number", "x-unit": "m/s", "minimum": 1e-6, "maximum": 10, "default": 0.1,
       "description": "sd of L times the step frequency as an observation of the speed (eq. 4.22 S_INS)"},
     "init_position_sd_m": {"type": "number", "x-unit": "m", "minimum": 0, "maximum": 1000, "default": 0.1,
@@ -110,8 +112,12 @@ public:
       "description": "... of at least this many satellites (when known) ..."},
     "gnss_consistent_chi2": {"type": "number", "minimum": 0.01, "maximum": 1e6, "default": 9,
       "description": "... that agrees with the steps: normalised innovation squared at most this"},
-    "gnss_sd_scale": {"type": "number", "minimum": 1, "maximum": 100, "default": 3,
-      "description": "fix errors are correlated over tens of seconds (atmosphere, multipath) and the filter takes them as independent: each fix counts with its sd (h_accuracy / sqrt 2 per axis) times this"},
+    "gnss_sd_scale": {"type": "number", "minimum": 1, "maximum": 100, "default": 1,
+      "description": "each fix counts with its sd (h_accuracy / sqrt 2 per axis) times this (above 1 for a receiver that reports itself better than it is)"},
+    "gnss_error_time_s": {"type": "number", "x-unit": "s", "minimum": 0, "maximum": 3600, "default": 60,
+      "description": "correlation time of the fixes' errors (atmosphere, multipath), estimated as two first-order Gauss-Markov states; 0 = each fix's error independent"},
+    "gnss_white_sd_m": {"type": "number", "x-unit": "m", "minimum": 0.01, "maximum": 100, "default": 0.5,
+      "description": "with gnss_error_time_s: the part of a fix's sd per axis that is independent from fix to fix (the rest is correlated)"},
     "gnss_fused_sd_scale": {"type": "number", "minimum": 1, "maximum": 100, "default": 2,
       "description": "a fix that is not good by accuracy and satellites (fused mode) counts with its sd times this"},
     "gnss_timeout_s": {"type": "number", "x-unit": "s", "minimum": 0.01, "maximum": 600, "default": 3,
@@ -184,6 +190,7 @@ public:
         const double dt_s = t_last_step_ns_ > 0 ? std::min(2.0, static_cast<double>(g.header.t_ns - t_last_step_ns_) * 1e-9)
                                                  : 0.0;
         pednav::pdr_fusion::FixResult r;
+        const double t_fix_s = static_cast<double>(g.header.t_ns) * 1e-9;
         if (!ever_fixed_) {
             // The first fix places the track (its start point was a guess),
             // as uncertain as the fix: with the start point's P0 the next
@@ -192,11 +199,11 @@ public:
             // simulated outdoor_indoor walk, seed 4).
             const auto& x = ekf_.x();
             ekf_.place_at_fix(enu[0] - x(StepGnssEkf::S) * dt_s * std::sin(x(StepGnssEkf::PSI)),
-                              enu[1] - x(StepGnssEkf::S) * dt_s * std::cos(x(StepGnssEkf::PSI)), sd_m);
+                              enu[1] - x(StepGnssEkf::S) * dt_s * std::cos(x(StepGnssEkf::PSI)), sd_m, t_fix_s);
             r.accepted = true;
             ever_fixed_ = true;
         } else {
-            r = ekf_.gnss_position(enu[0], enu[1], sd_m, dt_s);
+            r = ekf_.gnss_position(enu[0], enu[1], sd_m, dt_s, t_fix_s);
         }
         if (r.recovered) recovered_ = true, ++recoveries_;
         if (r.accepted && has_vel) ekf_.gnss_velocity(g.vel_enu_mps[0], g.vel_enu_mps[1], 0.0);
@@ -336,4 +343,4 @@ private:
 
 }  // namespace
 
-PEDNAV_PLUGIN_LIBRARY("org.pednav.waist.fusion", "1.0.0", WaistFusion)
+PEDNAV_PLUGIN_LIBRARY("org.pednav.waist.fusion", "1.1.0", WaistFusion)

@@ -53,40 +53,53 @@ TEST_CASE("fusion EKF: azimuth convention, E += L sin psi, N += L cos psi, and i
 TEST_CASE("fusion EKF: the innovation gate rejects a fix 50 m off and a lost track restarts at consistent fixes") {
     StepGnssEkf ekf(config());
     ekf.start(0, 0, 0, 0.0, 0.7);
+    double t = 0;
     for (int k = 0; k < 10; ++k) {
         ekf.predict_step(0.7, 0.0, 1.8);
-        CHECK(ekf.gnss_position(0.0, ekf.x()(StepGnssEkf::N) + 0.5, 1.5, 0.0).accepted);
+        CHECK(ekf.gnss_position(0.0, ekf.x()(StepGnssEkf::N) + 0.5, 1.5, 0.0, t += 0.5).accepted);
     }
-    const double n_before = ekf.x()(StepGnssEkf::N);
-    const FixResult jump = ekf.gnss_position(50.0, n_before, 1.5, 0.0);
+    const double n_before = ekf.x()(StepGnssEkf::N), e_before = ekf.x()(StepGnssEkf::E);
+    const FixResult jump = ekf.gnss_position(50.0, n_before, 1.5, 0.0, t += 1);
     CHECK_FALSE(jump.accepted);
     CHECK(jump.nis > config().gate_chi2);
-    CHECK(ekf.x()(StepGnssEkf::E) == doctest::Approx(0.0).epsilon(1e-9));
-    CHECK(ekf.gnss_position(0.0, n_before, 1.5, 0.0).accepted);  // back to normal: the count restarts
+    CHECK(ekf.x()(StepGnssEkf::E) == e_before);  // the rejected fix changed nothing
+    CHECK(ekf.gnss_position(0.0, n_before, 1.5, 0.0, t += 1).accepted);  // back to normal: the count restarts
     // The track was wrong after all: the fixes stay 40 m east, consistently.
     FixResult r;
-    for (int k = 0; k < config().gate_max_rejections; ++k) r = ekf.gnss_position(40.0, n_before, 1.5, 0.0);
+    for (int k = 0; k < config().gate_max_rejections; ++k) r = ekf.gnss_position(40.0, n_before, 1.5, 0.0, t += 1);
     CHECK(r.recovered);
     CHECK(ekf.x()(StepGnssEkf::E) == doctest::Approx(40.0));
 }
 
 TEST_CASE("fusion EKF: a track placed at a fix is as uncertain as the fix, so the next fixes average in") {
-    StepGnssEkf ekf(config());
+    // Fix errors independent from fix to fix (gnss_error_time_s 0).
+    StepGnssEkfConfig white = config();
+    white.gnss_error_time_s = 0;
+    StepGnssEkf ekf(white);
     ekf.start(0, 0, 0, 0.0, 0.7);  // the start point's P0 (init_position_sd_m, 0.1 m)
-    ekf.place_at_fix(4.0, 0.0, 3.0);  // a first fix 4 m east of the truth at 0, sd 3 m
+    ekf.place_at_fix(4.0, 0.0, 3.0, 0.0);  // a first fix 4 m east of the truth at 0, sd 3 m
     CHECK(ekf.x()(StepGnssEkf::E) == doctest::Approx(4.0));
     CHECK(ekf.P()(StepGnssEkf::E, StepGnssEkf::E) == doctest::Approx(9.0));
     CHECK(ekf.P()(StepGnssEkf::E, StepGnssEkf::PSI) == 0.0);
     // Standing, fixes of the same sd alternate about the truth: the track
     // goes to their mean, as an average of all of them (the first included).
-    for (int k = 0; k < 9; ++k) CHECK(ekf.gnss_position(k % 2 ? 1.0 : -1.0, 0.0, 3.0, 0.0).accepted);
+    for (int k = 0; k < 9; ++k) CHECK(ekf.gnss_position(k % 2 ? 1.0 : -1.0, 0.0, 3.0, 0.0, k + 1.0).accepted);
     CHECK(ekf.x()(StepGnssEkf::E) == doctest::Approx((4.0 - 1.0) / 10.0).epsilon(1e-6));
     CHECK(ekf.P()(StepGnssEkf::E, StepGnssEkf::E) == doctest::Approx(0.9).epsilon(1e-6));
     // A sd below gnss_min_sd_m is floored there.
     StepGnssEkf tight(config());
     tight.start(0, 0, 0, 0.0, 0.7);
-    tight.place_at_fix(1.0, 2.0, 0.0);
+    tight.place_at_fix(1.0, 2.0, 0.0, 0.0);
     CHECK(tight.P()(StepGnssEkf::N, StepGnssEkf::N) == doctest::Approx(config().gnss_min_sd_m * config().gnss_min_sd_m));
+    // With correlated fix errors (the default) the track at a fix is as
+    // uncertain as the fix, and its error is the fix's correlated part.
+    StepGnssEkf gm(config());
+    gm.start(0, 0, 0, 0.0, 0.7);
+    gm.place_at_fix(4.0, 0.0, 3.0, 0.0);
+    const double c2 = 9.0 - config().gnss_white_sd_m * config().gnss_white_sd_m;
+    CHECK(gm.P()(StepGnssEkf::E, StepGnssEkf::E) == doctest::Approx(9.0));
+    CHECK(gm.P()(StepGnssEkf::BE, StepGnssEkf::BE) == doctest::Approx(c2));
+    CHECK(gm.P()(StepGnssEkf::E, StepGnssEkf::BE) == doctest::Approx(-c2));
 }
 
 TEST_CASE("fusion EKF: step length and walking direction learnt from GNSS carry through an outage") {
@@ -102,7 +115,7 @@ TEST_CASE("fusion EKF: step length and walking direction learnt from GNSS carry 
         e += true_length * std::sin(true_psi);
         n += true_length * std::cos(true_psi);
         if (k % 2 == 0) {
-            ekf.gnss_position(e + 1.0 * noise(rng), n + 1.0 * noise(rng), 1.0, 0.0);
+            ekf.gnss_position(e + 1.0 * noise(rng), n + 1.0 * noise(rng), 1.0, 0.0, k / 1.8);
             const double v = true_length * 1.8;
             ekf.gnss_velocity(v * std::sin(true_psi) + 0.1 * noise(rng), v * std::cos(true_psi) + 0.1 * noise(rng), 0.1);
         }
@@ -118,6 +131,44 @@ TEST_CASE("fusion EKF: step length and walking direction learnt from GNSS carry 
     }
     const double drift = std::hypot(ekf.x()(StepGnssEkf::E) - e - e0, ekf.x()(StepGnssEkf::N) - n - n0);
     CHECK(drift < 0.02 * 100 * true_length);
+}
+
+TEST_CASE("fusion EKF: a fix error correlated over a minute is the fixes' (Gauss-Markov states), not the step length's") {
+    // 0.8 m steps at 1.8 Hz northwards, the model right; a fix every other
+    // step, its error first-order Gauss-Markov (1.5 m per axis, 60 s) plus
+    // 0.5 m white, its velocity 0.1 m/s noisy: over a few hundred metres the
+    // slowly drifting error looks like a longer or shorter step. Modelled as
+    // bE, bN it is not learnt as the step length; taken as white, it is.
+    const auto rms_length_error = [](double error_time_s, unsigned seed) {
+        StepGnssEkfConfig c = config();
+        c.gnss_error_time_s = error_time_s;
+        StepGnssEkf ekf(c);
+        ekf.start(0, 0, 0, 0.0, 0.8);
+        std::mt19937 rng(seed);
+        std::normal_distribution<double> noise(0.0, 1.0);
+        const double fix_dt_s = 2 / 1.8, phi = std::exp(-fix_dt_s / 60.0);
+        double n = 0, sum2 = 0, be = 1.5 * noise(rng), bn = 1.5 * noise(rng);
+        int count = 0;
+        for (int k = 0; k < 540; ++k) {  // 300 s, 432 m
+            ekf.predict_step(0.8, 0.0, 1.8);
+            n += 0.8;
+            const double t = k / 1.8;
+            if (k % 2 == 0) {
+                be = phi * be + std::sqrt(1 - phi * phi) * 1.5 * noise(rng);
+                bn = phi * bn + std::sqrt(1 - phi * phi) * 1.5 * noise(rng);
+                ekf.gnss_position(be + 0.5 * noise(rng), n + bn + 0.5 * noise(rng), std::hypot(1.5, 0.5), 0.0, t);
+                ekf.gnss_velocity(0.1 * noise(rng), 1.44 + 0.1 * noise(rng), 0.0);
+            }
+            if (t > 60) sum2 += std::pow(ekf.x()(StepGnssEkf::L) / 0.8 - 1.0, 2), ++count;
+        }
+        return std::sqrt(sum2 / count);  // after the first minute
+    };
+    double gm = 0, white = 0;
+    for (unsigned seed = 1; seed <= 8; ++seed)
+        gm += rms_length_error(60.0, seed) / 8, white += rms_length_error(0.0, seed) / 8;
+    MESSAGE("rms step length error, 8 walks: " << 100 * gm << " % (Gauss-Markov), " << 100 * white << " % (white)");
+    CHECK(gm < 0.006);
+    CHECK(white > 1.5 * gm);
 }
 
 TEST_CASE("GNSS modes: accuracy, satellites and agreement with the steps choose GNSS, fused or steps alone") {

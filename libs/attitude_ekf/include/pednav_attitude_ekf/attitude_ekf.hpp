@@ -2,6 +2,7 @@
 // Attitude of a body-worn IMU (waist paper, sec. 4.1-4.3): quaternion
 // strapdown integration with a 9-state error-state EKF
 //   dx = [dphi (ENU, rad), dbg (body, rad/s), dba (body, m/s^2)]   (eq. 4.8)
+// (and the two coefficients of the magnetometer's compass deviation, below)
 // with the errors defined as true minus estimated: R_true = (I + [dphi x]) R,
 // b_true = b + db. Closed loop: every update is folded into the quaternion
 // and the biases, and dx returns to 0.
@@ -20,12 +21,26 @@
 //     window, gravity_sd_moving_mps2 otherwise: roll and pitch;
 //   still: a window with |w| and |a| still: y = mean w_m - bg = dbg + v: gyro bias;
 //   magnetometer, while navmath::MagneticFieldGate accepts the reading:
-//     y = wrap(psi_mag + declination - psi) = -dphi_U + v (heading is
-//     clockwise, dphi_U counter-clockwise), rejected beyond mag_gate_chi2
-//     (a disturbance that keeps the strength and dip) unless
+//     y = wrap(psi_mag + declination - psi - B sin psi - C cos psi)
+//       = -dphi_U + sin psi dB + cos psi dC + v
+//     (heading is clockwise, dphi_U counter-clockwise), rejected beyond
+//     mag_gate_chi2 (a disturbance that keeps the strength and dip) unless
 //     mag_max_rejections in a row: then the field resets the yaw.
+//     B sin psi + C cos psi is the compass deviation of a hard-iron field
+//     (the sensor's own magnetisation, fixed in its frame): with the body
+//     level axes h (x projected level) and l (left of h), a bias b adds
+//     (b.h, b.l) to the horizontal field B_h (cos psi, sin psi) seen along
+//     them, and atan2 turns that into psi + (b.l cos psi - b.h sin psi) / B_h
+//     to first order: the semicircular deviation B = -b.h / B_h,
+//     C = b.l / B_h of compass adjustment, constant while the sensor's tilt
+//     is. Its constant part is the heading's own error; B and C become
+//     observable against the gyro as the walker turns (states dB, dC, P0
+//     mag_deviation_sd_rad, 0 = not estimated).
+// Error state with the deviation: dx = [dphi, dbg, dba, dB, dC]; B and C
+// are constants with a random walk (Phi's block is I) and enter only the
+// magnetometer's H.
 // The correction is q <- exp(dphi) (x) q in ENU (the left-multiplied form of
-// eq. 4.6-4.7), bg += dbg, ba += dba.
+// eq. 4.6-4.7), bg += dbg, ba += dba, (B, C) += (dB, dC).
 //
 // Initial attitude: roll and pitch from the mean specific force of the first
 // still period (or of the first align_timeout_s), the initial gyro bias from
@@ -62,6 +77,8 @@ struct AttitudeEkfConfig {
     bool use_magnetometer;
     double declination_deg;                 // east positive: true heading = magnetic + declination
     double mag_heading_sd_rad;              // sd of one magnetometer heading
+    double mag_deviation_sd_rad;            // P0 of the compass deviation's coefficients B, C; 0 = not estimated
+    double mag_deviation_walk_rad_per_sqrts;  // their random walk (Q of dB, dC)
     double mag_update_s;                    // at most one magnetometer update per this long, s
     double mag_gate_chi2;                   // heading innovations beyond this (normalised, squared) are rejected
     int mag_max_rejections;                 // ... unless this many in a row: then the field resets the yaw
@@ -95,6 +112,8 @@ AttitudeEkfConfig attitude_ekf_config(Params& p) {
     c.use_magnetometer = p.boolean("use_magnetometer");
     c.declination_deg = p.number("declination_deg");
     c.mag_heading_sd_rad = p.number("mag_heading_sd_rad");
+    c.mag_deviation_sd_rad = p.number("mag_deviation_sd_rad");
+    c.mag_deviation_walk_rad_per_sqrts = p.number("mag_deviation_walk_rad_per_sqrts");
     c.mag_update_s = p.number("mag_update_s");
     c.mag_gate_chi2 = p.number("mag_gate_chi2");
     c.mag_max_rejections = static_cast<int>(p.integer("mag_max_rejections"));
@@ -110,7 +129,9 @@ enum class YawSource { none, config, magnetometer, gnss_course, app };
 
 class AttitudeEkf {
 public:
-    using Mat9 = Eigen::Matrix<double, 9, 9>;
+    static constexpr int kStates = 11;  // dphi (3), dbg (3), dba (3), dB, dC
+    using MatP = Eigen::Matrix<double, kStates, kStates>;
+    using VecX = Eigen::Matrix<double, kStates, 1>;
 
     // Throws std::invalid_argument for a config out of range.
     explicit AttitudeEkf(const AttitudeEkfConfig& config);
@@ -128,8 +149,11 @@ public:
     const Vec3& gyro_bias() const { return bg_; }
     const Vec3& accel_bias() const { return ba_; }
     Eigen::Matrix3d attitude_cov() const { return P_.topLeftCorner<3, 3>(); }
-    const Mat9& covariance() const { return P_; }
+    const MatP& covariance() const { return P_; }
     YawSource yaw_source() const { return yaw_source_; }
+    // The compass deviation's coefficients (B, C), rad: a magnetometer
+    // heading reads psi + B sin psi + C cos psi.
+    const Eigen::Vector2d& mag_deviation_rad() const { return dev_; }
     // The magnetometer corrected the attitude since the last call.
     bool take_mag_used() {
         const bool u = mag_used_;
@@ -144,8 +168,9 @@ private:
     void window_sample(const Vec3& a, const Vec3& w, double dt);
     void end_window();
     template <int M>
-    void update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, 9>& H, double r_var);
-    void apply(const Eigen::Matrix<double, 9, 1>& dx);
+    void update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kStates>& H, double r_var);
+    void apply(const VecX& dx);
+    void reset_covariance();
     void rotate_yaw(double delta_heading_rad);
 
     AttitudeEkfConfig c_;
@@ -154,7 +179,8 @@ private:
     int64_t t_ns_ = 0, t_start_ns_ = 0;
     Quat q_ = Quat::Identity();
     Vec3 bg_ = Vec3::Zero(), ba_ = Vec3::Zero();
-    Mat9 P_ = Mat9::Zero();
+    Eigen::Vector2d dev_ = Eigen::Vector2d::Zero();
+    MatP P_ = MatP::Zero();
     double g_mps2_ = 9.80665;
     YawSource yaw_source_ = YawSource::none;
     bool mag_used_ = false;

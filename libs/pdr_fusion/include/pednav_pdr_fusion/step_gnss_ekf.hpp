@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // The waist paper's fusion EKF (sec. 4.4), state
-//   x = [E, N, S, A, psi, L]                                      (eq. 4.14)
+//   x = [E, N, S, A, psi, L, bE, bN]                  (eq. 4.14, and bE, bN)
 // E, N, A in ENU metres, S the walking speed (m/s), psi the walking
 // direction (azimuth, clockwise from north: one convention in the model and
-// its Jacobian, ERRATA.md), L the step length (m).
+// its Jacobian, ERRATA.md), L the step length (m); bE, bN the error of the
+// GNSS fixes (m), correlated from one fix to the next (below).
 //
 // Per step k -> k+1 (eq. 4.15 as corrected), with the heading change of the
 // attitude estimator over the step dpsi and the step-length model's value
@@ -26,7 +27,16 @@
 // steps set it, not L.
 //
 // GNSS (eq. 4.17-4.19) at a fix dt after the last step: position
-// h = [E + S dt sin psi, N + S dt cos psi]; velocity as speed L f (f the last
+// h = [E + S dt sin psi + bE, N + S dt cos psi + bN]. A fix's error (the
+// atmosphere, multipath) changes over tens of seconds: taken as independent
+// from fix to fix, a drift of it over a leg teaches the filter a wrong step
+// length and walking direction. It is a first-order Gauss-Markov process
+// per axis (gnss_error_time_s = tau; sigma_c^2 = sd^2 - sigma_w^2, the fix's
+// sd per axis less its white part gnss_white_sd_m): from one fix to the
+// next, dt apart, b <- phi b, P_bb <- phi^2 P_bb + (1 - phi^2) sigma_c^2,
+// the covariances with b times phi, phi = exp(-dt / tau) (exact
+// discretisation); the fix's own R is sigma_w^2. tau = 0: no b, R = sd^2.
+// Velocity as speed L f (f the last
 // step's frequency: a GNSS speed teaches the step length; S when standing)
 // and, when fast enough, course psi. Every GNSS observation passes an innovation gate
 // (normalised innovation squared below gate_chi2) or is rejected: a fix that
@@ -57,6 +67,8 @@ struct StepGnssEkfConfig {
     double gnss_min_sd_m;         // floor of a fix's sd per axis, m
     double gnss_velocity_sd_mps;  // sd of a GNSS velocity component
     double gnss_course_min_speed_mps;  // a course observes psi at this speed or faster
+    double gnss_error_time_s;     // correlation time of the fixes' errors (Gauss-Markov states bE, bN); 0 = white
+    double gnss_white_sd_m;       // the white part of a fix's sd per axis (the rest is correlated)
     double gate_chi2;             // innovation gate (2 degrees of freedom for a position)
     int gate_max_rejections;      // rejected, mutually consistent fixes in a row that restart the track
     double recover_spread_m;      // ... agreeing within this
@@ -78,6 +90,8 @@ StepGnssEkfConfig step_gnss_ekf_config(Params& p) {
     c.gnss_min_sd_m = p.number("gnss_min_sd_m");
     c.gnss_velocity_sd_mps = p.number("gnss_velocity_sd_mps");
     c.gnss_course_min_speed_mps = p.number("gnss_course_min_speed_mps");
+    c.gnss_error_time_s = p.number("gnss_error_time_s");
+    c.gnss_white_sd_m = p.number("gnss_white_sd_m");
     c.gate_chi2 = p.number("gate_chi2");
     c.gate_max_rejections = static_cast<int>(p.integer("gate_max_rejections"));
     c.recover_spread_m = p.number("recover_spread_m");
@@ -93,9 +107,10 @@ struct FixResult {
 
 class StepGnssEkf {
 public:
-    using Vec6 = Eigen::Matrix<double, 6, 1>;
-    using Mat6 = Eigen::Matrix<double, 6, 6>;
-    enum { E = 0, N = 1, S = 2, A = 3, PSI = 4, L = 5 };
+    enum { E = 0, N = 1, S = 2, A = 3, PSI = 4, L = 5, BE = 6, BN = 7 };
+    static constexpr int kStates = 8;
+    using Vec = Eigen::Matrix<double, kStates, 1>;
+    using Mat = Eigen::Matrix<double, kStates, kStates>;
 
     explicit StepGnssEkf(const StepGnssEkfConfig& config);
 
@@ -111,7 +126,8 @@ public:
     // Standing still: the speed is 0 (and the next bout's speed is unknown).
     void standing();
 
-    FixResult gnss_position(double e_m, double n_m, double sd_m, double dt_since_step_s);
+    // A fix at t_s (its time, for the error's correlation), sd_m per axis.
+    FixResult gnss_position(double e_m, double n_m, double sd_m, double dt_since_step_s, double t_s);
     // GNSS velocity (ENU, m/s): speed and course; false when gated out.
     bool gnss_velocity(double ve_mps, double vn_mps, double sd_mps);
     void altitude(double a_m, double sd_m);
@@ -121,28 +137,34 @@ public:
     // Places the horizontal position at a fix known to sd_m per axis (its
     // covariance becomes the fix's: the start point's P0 is for a point the
     // app knows, not for a fix).
-    void place_at_fix(double e_m, double n_m, double sd_m);
+    void place_at_fix(double e_m, double n_m, double sd_m, double t_s);
     void set_heading(double psi_rad, double sd_rad);
 
-    const Vec6& x() const { return x_; }
-    const Mat6& P() const { return P_; }
+    const Vec& x() const { return x_; }
+    const Mat& P() const { return P_; }
     double model_length_m() const { return last_model_m_; }
     int consecutive_rejections() const { return rejections_; }
 
 private:
     template <int M>
-    double nis(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, 6>& H,
+    double nis(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kStates>& H,
                const Eigen::Matrix<double, M, M>& R, Eigen::Matrix<double, M, M>& S_out) const;
     template <int M>
-    void update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, 6>& H,
+    void update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kStates>& H,
                 const Eigen::Matrix<double, M, M>& R);
 
     void forget_speed();
+    // The fix's sd per axis split into its correlated and white parts.
+    void split_sd(double sd_m, double& correlated_m, double& white_m) const;
+    // bE, bN from the last fix to t_s (Gauss-Markov, exact discretisation).
+    void decay_fix_error(double t_s, double correlated_sd_m);
 
     StepGnssEkfConfig c_;
     bool started_ = false, stopped_ = false;
-    Vec6 x_ = Vec6::Zero();
-    Mat6 P_ = Mat6::Zero();
+    Vec x_ = Vec::Zero();
+    Mat P_ = Mat::Zero();
+    double t_fix_s_ = 0;
+    bool has_fix_ = false;
     double last_model_m_ = 0;
     double frequency_hz_ = 0;  // of the last step
     int rejections_ = 0;
