@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "strict_json.hpp"
+#include "pednav_strict_json/strict_json.hpp"
 
 namespace pednav::engine {
 
@@ -113,8 +113,8 @@ void parse_map(const nlohmann::json& m, EngineConfig& cfg) {
 EngineConfig parse_config(const std::string& text) {
     nlohmann::json doc;
     try {
-        doc = parse_strict_json(text);
-    } catch (const StrictJsonError& e) {
+        doc = strict_json::parse(text);
+    } catch (const strict_json::Error& e) {
         fail(e.pointer, std::string("config: ") + e.what());
     }
     if (!doc.is_object())

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <pednav/pn_engine.h>
 
-#include "strict_json.hpp"
+#include "pednav_strict_json/strict_json.hpp"
 
 namespace pednav {
 
@@ -60,8 +60,8 @@ EnginePtr create_engine(const ReplayOptions& options, std::string& error) {
     if (!options.mount.empty()) {
         nlohmann::json doc;
         try {
-            doc = engine::parse_strict_json(config);
-        } catch (const engine::StrictJsonError& e) {
+            doc = strict_json::parse(config);
+        } catch (const strict_json::Error& e) {
             error = std::string("PN_E_INVALID_CONFIG") + (e.pointer.empty() ? "" : " at " + e.pointer) +
                     ": config: " + e.what();
             return nullptr;

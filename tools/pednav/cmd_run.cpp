@@ -14,7 +14,7 @@
 #include "cli_common.hpp"
 #include "run_pipeline.hpp"
 #include "run_plot.hpp"
-#include "strict_json.hpp"
+#include "pednav_strict_json/strict_json.hpp"
 
 namespace {
 
@@ -136,7 +136,7 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     options.config_json = cli::load_config(config_path, mount.empty() ? "foot" : mount);
     options.mount = mount;
     if (origin.known || !map_path.empty()) {  // the options win over the config's own
-        nlohmann::json doc = engine::parse_strict_json(options.config_json);  // checked by load_config
+        nlohmann::json doc = strict_json::parse(options.config_json);  // checked by load_config
         if (!doc.is_object()) throw std::runtime_error("config: not a JSON object");
         if (origin.known)
             doc["origin"] = {{"lat_deg", origin.lat_deg}, {"lon_deg", origin.lon_deg}, {"height_m", origin.height_m}};

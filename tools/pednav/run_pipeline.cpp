@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "cli_common.hpp"
-#include "strict_json.hpp"
+#include "pednav_strict_json/strict_json.hpp"
 
 namespace pednav::cli {
 
@@ -25,8 +25,8 @@ std::string load_config(const std::string& config_path, const std::string& mount
         // The engine takes a C string and the tools patch the document: both
         // need it free of NUL bytes, duplicate keys and runaway nesting.
         try {
-            engine::parse_strict_json(text);
-        } catch (const engine::StrictJsonError& e) {
+            strict_json::parse(text);
+        } catch (const strict_json::Error& e) {
             throw std::runtime_error("config " + config_path + ": " + e.what());
         }
         return text;

@@ -5,6 +5,7 @@
 
 #include "map_writer.hpp"
 #include "pednav_indoor_map/map_convert.hpp"
+#include "pednav_strict_json/strict_json.hpp"
 
 namespace pednav::indoor_map {
 
@@ -40,9 +41,9 @@ std::string humolire_to_geojson(const SourceFile& map_data, const MapConversion&
     const Source src{map_data};
     json doc;
     try {
-        doc = json::parse(map_data.text);
-    } catch (const json::exception& e) {  // parse_error, and out_of_range for a number beyond a double
-        throw std::runtime_error(map_data.name + ": not JSON: " + e.what());
+        doc = strict_json::parse(map_data.text);
+    } catch (const strict_json::Error& e) {  // not JSON, too deep, a key twice, a number beyond a double
+        throw std::runtime_error(map_data.name + (e.pointer.empty() ? "" : ":" + e.pointer) + ": " + e.what());
     }
     if (!doc.is_object()) src.fail("", "not a MapEditor map (a JSON object with \"links\" and \"scale\")");
     const double scale = src.number(doc, "", "scale");

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <iterator>
 
+#include "pednav_strict_json/strict_json.hpp"
+
 namespace pednav::indoor_map {
 
 MapError::MapError(std::string pointer_, const std::string& message)
@@ -83,9 +85,9 @@ std::string pointer_token(const std::string& key) {
 nlohmann::json parse_map_document(std::string_view document) {
     nlohmann::json doc;
     try {
-        doc = nlohmann::json::parse(document.begin(), document.end());
-    } catch (const nlohmann::json::parse_error& e) {
-        throw MapError("", std::string("the map is not JSON: ") + e.what());
+        doc = strict_json::parse(document);
+    } catch (const strict_json::Error& e) {  // not JSON, too deep, a key twice, 1e400, a NUL
+        throw MapError(e.pointer, e.what());
     }
     if (!doc.is_object()) throw MapError("", "the map is not a GeoJSON FeatureCollection (not a JSON object)");
     const auto type = doc.find("type");

@@ -181,8 +181,14 @@ TEST_CASE("geojson map: the simulator's earlier building.geojson loads as it is"
 TEST_CASE("geojson map: errors name the member at fault by JSON pointer") {
     const std::string wall = R"({"type": "Feature", "properties": {"pednav:kind": "wall", "pednav:floor": 0},
                                  "geometry": {"type": "LineString", "coordinates": [[0, 0], [1, 0]]}})";
-    CHECK(map_error("{") .rfind(" | the map is not JSON: ", 0) == 0);
-    CHECK(map_error("[]") == " | the map is not a GeoJSON FeatureCollection (not a JSON object)");
+    CHECK(map_error("{") == " | not valid JSON at line 1, column 2: syntax error while parsing object key - unexpected end of input; "
+                             "expected string literal");
+    CHECK(map_error(R"({"type": "FeatureCollection", "type": "x", "features": []})") ==
+          "/type | duplicate key \"type\" in the document");
+    std::string deepest = "/features";  // the 65th level: the document, its features and 63 arrays in them
+    for (int level = 0; level < 63; ++level) deepest += "/0";
+    CHECK(map_error(R"({"type": "FeatureCollection", "features": [)" + std::string(70, '[')) ==
+          deepest + " | arrays and objects nested deeper than 64 levels at " + deepest);
     CHECK(map_error(R"({"type": "Feature"})") ==
           "/type | the map is not a GeoJSON FeatureCollection (\"type\": \"FeatureCollection\")");
     CHECK(map_error(R"({"type": "FeatureCollection"})") == "/features | a FeatureCollection needs a \"features\" array");

@@ -190,7 +190,7 @@ TEST_CASE("convert: bad sources are named by file and line or JSON pointer") {
               } catch (...) {
                   throw std::logic_error("not a std::runtime_error");
               }
-          }).rfind("m.json: not JSON: ", 0) == 0);
+          }) == "m.json:/scale: the number at /scale is out of range (not a finite double)");
     RairyuuMapFiles f = biba_files();
     f.link.text += "\n900,0,25,99999\n";  // after its 525 links
     CHECK(error([&] { rairyuu_to_geojson(f, {}); }) == "link.txt:527: node 99999 is not in node.txt");

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "strict_json.hpp"
+#include "pednav_strict_json/strict_json.hpp"
 
 #include <cmath>
 #include <set>
 #include <vector>
 
-namespace pednav::engine {
+namespace pednav::strict_json {
 
-std::string json_pointer_append(const std::string& pointer, std::string_view token) {
+std::string pointer_append(const std::string& pointer, std::string_view token) {
     std::string out = pointer + "/";
     for (const char c : token) {
         if (c == '~')
@@ -35,7 +35,7 @@ struct Level {
 std::string next_pointer(const std::vector<Level>& stack) {
     if (stack.empty()) return "";
     const Level& top = stack.back();
-    return top.is_object ? top.member : json_pointer_append(top.pointer, std::to_string(top.index));
+    return top.is_object ? top.member : pointer_append(top.pointer, std::to_string(top.index));
 }
 
 void element_done(std::vector<Level>& stack) {
@@ -74,9 +74,9 @@ std::string parse_reason(const std::string& what) {
 
 }  // namespace
 
-nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
+nlohmann::json parse(std::string_view text, size_t max_depth) {
     if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
-        throw StrictJsonError("", "a NUL byte at " + position_of(text, nul) + " (byte " +
+        throw Error("", "a NUL byte at " + position_of(text, nul) + " (byte " +
                                       std::to_string(nul) +
                                       "): the text after it would be ignored by C callers");
     }
@@ -90,7 +90,7 @@ nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
                 level.is_object = event == Event::object_start;
                 level.pointer = next_pointer(stack);
                 if (stack.size() >= max_depth) {
-                    throw StrictJsonError(
+                    throw Error(
                         level.pointer, "arrays and objects nested deeper than " + std::to_string(max_depth) +
                                            " levels at " +
                                            (level.pointer.empty() ? "the top" : level.pointer));
@@ -101,9 +101,9 @@ nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
             case Event::key: {
                 Level& top = stack.back();
                 const std::string key = parsed.get<std::string>();
-                top.member = json_pointer_append(top.pointer, key);
+                top.member = pointer_append(top.pointer, key);
                 if (!top.keys.insert(key).second)
-                    throw StrictJsonError(top.member,
+                    throw Error(top.member,
                                           "duplicate key \"" + key + "\" in " +
                                               (top.pointer.empty() ? "the document" : top.pointer));
                 break;
@@ -115,7 +115,7 @@ nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
                 break;
             case Event::value:
                 if (parsed.is_number_float() && !std::isfinite(parsed.get<double>()))
-                    throw StrictJsonError(next_pointer(stack), "the number at " + next_pointer(stack) +
+                    throw Error(next_pointer(stack), "the number at " + next_pointer(stack) +
                                                                    " is out of range (not a finite double)");
                 element_done(stack);
                 break;
@@ -126,11 +126,11 @@ nlohmann::json parse_strict_json(std::string_view text, size_t max_depth) {
         return nlohmann::json::parse(text.begin(), text.end(), callback);
     } catch (const nlohmann::json::parse_error& e) {
         std::string where = position_of(text, e.byte > 0 ? e.byte - 1 : 0);
-        throw StrictJsonError("", "not valid JSON at " + where + ": " + parse_reason(e.what()));
+        throw Error("", "not valid JSON at " + where + ": " + parse_reason(e.what()));
     } catch (const nlohmann::json::out_of_range&) {  // 406: a number overflowing a double
-        throw StrictJsonError(next_pointer(stack), "the number at " + next_pointer(stack) +
+        throw Error(next_pointer(stack), "the number at " + next_pointer(stack) +
                                                        " is out of range (not a finite double)");
     }
 }
 
-}  // namespace pednav::engine
+}  // namespace pednav::strict_json
