@@ -104,7 +104,7 @@ TEST_CASE("issue 13: simulated chest and handheld walks: floors from the baromet
             CAPTURE(route);
             const WalkScore s = chest_eval::score_sim(sim_walk(mount, route), preset(mount), kPlugins);
             const std::string r = route;
-            CHECK(s.metrics.floor_correct_pct >= (r == "stairs" ? FLOOR_RIGHT_PCT_MIN_STAIRS : 98.5));
+            CHECK(s.metrics.floor_correct_pct >= (r == "stairs" ? FLOOR_RIGHT_PCT_MIN_STAIRS : 95.0));
             if (r == "corridor_loop" || r == "figure_eight") CHECK(s.metrics.floor_correct_pct == 100.0);
             // At most one step more per walking bout (the first peak of a bout, the start's transient).
             CHECK(s.steps >= s.true_steps);
