@@ -53,7 +53,8 @@ MatchedRecordingScore run_humolire_walk(const std::string& data_dir, const std::
     const std::string map_path = work_dir + "/humolire-" + walk + ".geojson";
     std::ofstream(map_path) << document;
 
-    const std::string preset = read_text(preset_path);
+    // The walker's height from participant.txt, as an app knows its user's.
+    const std::string preset = eval::with_user_height(read_text(preset_path), w.user_height_m);
     const std::string mount = nlohmann::json::parse(preset).at("mount");
     const io::SensorLog log = io::read_sensor_file(w.input);
     const io::StreamInfo* accel = log.stream("accel");
