@@ -62,20 +62,23 @@ private:
     struct Cell {
         uint64_t key;
         int count;
-        int first;       // index into order_ of its first particle
-        Point2 node;     // its first particle's position
+        double sum_e_m, sum_n_m;
+        Point2 node;  // its first particle's position
+        int parent;   // breadth-first search: the cell before, -1 a start, -2 unseen
     };
-    uint64_t key_of(double e_m, double n_m) const;
     static uint64_t key_of_cell(int64_t ix, int64_t iy);
+    static void cell_of_key(uint64_t key, int64_t& ix, int64_t& iy);
+    uint64_t key_of(double e_m, double n_m) const;
     int find(uint64_t key) const;  // index into cells_, -1 if empty
+    int neighbour(const Cell& c, int64_t de, int64_t dn) const;
     int block_count(const Cell& c) const;
 
     double cell_m_;
-    std::vector<std::pair<uint64_t, int>> order_;  // (cell key, particle index), sorted
-    std::vector<Cell> cells_;                      // sorted by key
-    std::vector<int> parent_;                      // breadth-first search: the node before, -2 unseen
+    std::vector<Cell> cells_;       // in the order their first particle came
+    std::vector<int> slots_;        // open addressing: index into cells_, -1 empty
     std::vector<int> queue_;
-    std::vector<Point2> history_;                  // ring of output positions
+    std::vector<int> particle_cell_;  // each particle's cell
+    std::vector<Point2> history_;     // ring of output positions
     int history_head_ = 0, history_size_ = 0;
 };
 
