@@ -122,7 +122,8 @@ TEST_CASE("stairs, foot: up two flights to floor 1 and back, no heel strike on t
     CHECK(min_pitch_on_stairs > -1e-9);
 }
 
-TEST_CASE("stairs, chest: the truth's floor changes on arrival, the half-way landing belongs to the floor left") {
+TEST_CASE(
+    "stairs, chest: the truth's floor changes on arrival, the half-way landing belongs to the floor left") {
     const SimOutput o = run("stairs", "chest", false);
     int changes = 0;
     for (size_t k = 1; k < o.truth.size(); ++k) {

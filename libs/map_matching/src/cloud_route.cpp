@@ -100,7 +100,8 @@ int CloudRoute::block_count(const Cell& c) const {
 // particle of that group nearest its mean. A cloud in one piece gives the
 // particle nearest its mean (eq. 2); a cloud split by walls, the same for
 // its largest piece.
-int CloudRoute::mode_particle(const indoor_map::WallIndex* walls, int floor, const std::vector<Particle>& particles) {
+int CloudRoute::mode_particle(const indoor_map::WallIndex* walls, int floor,
+                              const std::vector<Particle>& particles) {
     int best = -1, best_count = -1;
     for (size_t i = 0; i < cells_.size(); ++i) {
         const int c = block_count(cells_[i]);
@@ -122,7 +123,8 @@ int CloudRoute::mode_particle(const indoor_map::WallIndex* walls, int floor, con
             for (int64_t b = -1; b <= 1; ++b) {
                 const int k = neighbour(cell, a, b);
                 if (k < 0 || cells_[static_cast<size_t>(k)].parent != -2) continue;
-                if (walls && walls->crosses_wall(floor, cell.node, cells_[static_cast<size_t>(k)].node)) continue;
+                if (walls && walls->crosses_wall(floor, cell.node, cells_[static_cast<size_t>(k)].node))
+                    continue;
                 cells_[static_cast<size_t>(k)].parent = queue_[head];
                 queue_.push_back(k);
             }
@@ -150,8 +152,8 @@ void CloudRoute::record_output(const Point2& p) {
     history_size_ = std::min(history_size_ + 1, size);
 }
 
-bool CloudRoute::next_waypoint(const indoor_map::WallIndex& walls, int floor, const Point2& from, const Point2& goal,
-                               Point2& waypoint) {
+bool CloudRoute::next_waypoint(const indoor_map::WallIndex& walls, int floor, const Point2& from,
+                               const Point2& goal, Point2& waypoint) {
     const int m = static_cast<int>(cells_.size());
     queue_.clear();
     for (int i = 0; i < m; ++i) {

@@ -40,7 +40,7 @@ indoor_map::Map corridor_and_room() {
 TEST_CASE("the output is the largest group's particle nearest the group's mean") {
     const IndexedMap map(corridor_and_room(), 2.0);
     std::vector<Particle> cloud;
-    for (int i = 0; i < 260; ++i) cloud.push_back(at(4.0 + 0.01 * i, 0.6 + 0.002 * i));    // corridor
+    for (int i = 0; i < 260; ++i) cloud.push_back(at(4.0 + 0.01 * i, 0.6 + 0.002 * i));   // corridor
     for (int i = 0; i < 240; ++i) cloud.push_back(at(4.0 + 0.015 * i, 2.3 + 0.004 * i));  // room
     CloudRoute route(1.0, 500, 16);
     route.index(cloud);

@@ -24,7 +24,8 @@ public:
     // less its height above that floor), m.
     int at(double walked_height_m) {
         const long nearest = std::lround(walked_height_m / floor_height_m_);
-        const bool arrived = std::fabs(walked_height_m - static_cast<double>(nearest) * floor_height_m_) < kArrivalM;
+        const bool arrived =
+            std::fabs(walked_height_m - static_cast<double>(nearest) * floor_height_m_) < kArrivalM;
         if (!started_ || arrived) floor_ = static_cast<int>(nearest);
         started_ = true;
         return floor_;

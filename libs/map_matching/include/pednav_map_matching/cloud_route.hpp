@@ -74,8 +74,8 @@ private:
     int block_count(const Cell& c) const;
 
     double cell_m_;
-    std::vector<Cell> cells_;       // in the order their first particle came
-    std::vector<int> slots_;        // open addressing: index into cells_, -1 empty
+    std::vector<Cell> cells_;  // in the order their first particle came
+    std::vector<int> slots_;   // open addressing: index into cells_, -1 empty
     std::vector<int> queue_;
     std::vector<int> particle_cell_;  // each particle's cell
     std::vector<Point2> history_;     // ring of output positions
