@@ -62,6 +62,8 @@ TEST_CASE("humolire landmarks: counts, reference times, start, map walls") {
     CHECK(t.points[7].x_m == doctest::Approx(7.147));
     CHECK(t.start_heading_deg == doctest::Approx(90.0));  // along the map's x axis
     CHECK(t.walls[0].points_m[0][0] == doctest::Approx(0.04 * 3.97265625));
+    // y up from the image's bottom edge (915 pixels down), as the keypoints.
+    CHECK(t.walls[0].points_m[0][1] == doctest::Approx(0.04 * (915.0 - 3.630468750000002)).epsilon(1e-6));
 }
 
 TEST_CASE("ipol step annotations: footsteps within the trial and the two 10 m legs") {

@@ -43,22 +43,18 @@ MatchedRecordingScore run_humolire_walk(const std::string& data_dir, const std::
                                         const std::string& preset_path, const std::string& plugin_dir,
                                         const std::string& work_dir) {
     const eval::RecordedWalk w = eval::humolire_walk(data_dir, walk);
-    // The keypoints in metres, y up (the frame the track agrees with from the
-    // given start and heading); the map's pixels have y down the image, which
-    // the converter turns north up. Both are moved so that the start is (0, 0).
-    eval::Truth truth = eval::read_humolire(w.truth_path, false);
-    const double sx = truth.start_x_m, sy = truth.start_y_m;
-    for (auto& p : truth.points) p.x_m -= sx, p.y_m -= sy;
-
-    indoor_map::MapConversion conversion;
-    conversion.start_source_m = std::array<double, 2>{sx, -sy};
+    // The keypoints and the converted map are both in HuMoLiRe's metres (x
+    // right, y up from the map image's bottom edge); the walk starts at its
+    // start point with its heading.
+    const eval::Truth truth = eval::read_humolire(w.truth_path);
     const std::string map_file = data_dir + "/humolire-phone/maps/map_data.json";
-    const std::string document = indoor_map::humolire_to_geojson({map_file, read_text(map_file)}, conversion);
+    const std::string document = indoor_map::humolire_to_geojson({map_file, read_text(map_file)}, {});
     const indoor_map::Map map = indoor_map::read_geojson_map(document, std::nullopt);
     const std::string map_path = work_dir + "/humolire-" + walk + ".geojson";
     std::ofstream(map_path) << document;
 
-    const std::string preset = read_text(preset_path);
+    // The walker's height from participant.txt, as an app knows its user's.
+    const std::string preset = eval::with_user_height(read_text(preset_path), w.user_height_m);
     const std::string mount = nlohmann::json::parse(preset).at("mount");
     const io::SensorLog log = io::read_sensor_file(w.input);
     const io::StreamInfo* accel = log.stream("accel");
@@ -66,6 +62,8 @@ MatchedRecordingScore run_humolire_walk(const std::string& data_dir, const std::
     ReplayOptions o;
     o.plugin_dirs = {plugin_dir};
     o.heading_deg = truth.start_heading_deg;
+    o.start_enu_m[0] = truth.start_x_m;
+    o.start_enu_m[1] = truth.start_y_m;
     o.config_json = eval::patched_config(
         preset, {{"imu_rate_hz", rate},
                  {"pipelines", {{mount, {{"map_matcher", {{"plugin", "org.pednav.map.particle_filter"}}}}}}},

@@ -23,7 +23,7 @@ struct MatchedRecordingScore {
 
 // humolire-phone/<walk> through `preset_path` (configs/handheld.json or
 // chest.json) with the map matcher stage, on maps/map_data.json converted
-// with pednav.map/1's converter (local metres, (0, 0) at the walk's start).
+// with pednav.map/1's converter (HuMoLiRe's metres, the keypoints' frame).
 MatchedRecordingScore run_humolire_walk(const std::string& data_dir, const std::string& walk,
                                         const std::string& preset_path, const std::string& plugin_dir,
                                         const std::string& work_dir);

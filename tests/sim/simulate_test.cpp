@@ -122,6 +122,23 @@ TEST_CASE("stairs, foot: up two flights to floor 1 and back, no heel strike on t
     CHECK(min_pitch_on_stairs > -1e-9);
 }
 
+TEST_CASE(
+    "stairs, chest: the truth's floor changes on arrival, the half-way landing belongs to the floor left") {
+    const SimOutput o = run("stairs", "chest", false);
+    int changes = 0;
+    for (size_t k = 1; k < o.truth.size(); ++k) {
+        const TruthSample &a = o.truth[k - 1], &b = o.truth[k];
+        const double walked_m = b.pos_enu_m[2] - 1.35;  // the chest is 1.35 m above the floor walked on
+        if (b.floor != a.floor) {
+            ++changes;
+            // Within a stair's rise of the floor arrived at, never on the landing (1.7 m).
+            CHECK(std::fabs(walked_m - 3.4 * b.floor) < 0.1);
+        }
+        if (std::fabs(walked_m - 1.7) < 0.05) CHECK(b.floor == (b.t_s < 40.0 ? 0 : 1));  // up, then down
+    }
+    CHECK(changes == 2);  // the bounce on the landing flips nothing
+}
+
 TEST_CASE("chest and waist: every step counted, bounce of a few cm, standing still at both ends") {
     for (const char* mount : {"chest", "waist"}) {
         CAPTURE(mount);

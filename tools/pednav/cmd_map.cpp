@@ -31,8 +31,9 @@ constexpr const char* kUsage =
     "  convert    a floor plan drawn in image pixels to pednav.map/1, local metres (east = x, north = -y)\n"
     "    --from humolire  HuMoLiRe's MapEditor JSON (map_data.json, or the folder that holds it)\n"
     "    --from biba      rairyuu's MapEditor files (the folder of core.txt, node, link, polygon, arrow)\n"
-    "    --start      the walk's start, m in the source's frame (x right, y down): becomes (0, 0)\n"
-    "                 (default: biba's core.txt start point; humolire: the image's top-left corner)\n"
+    "    --start      the walk's start, m in the source's frame, becomes (0, 0): biba x right, y down\n"
+    "                 the image (default: core.txt's start point); humolire x right, y up from the\n"
+    "                 image's bottom edge, as its keypoints (default: that frame's origin)\n"
     "    --origin     write WGS-84 around this origin, the geodetic position of (0, 0)\n";
 
 pednav::geodesy::GeodeticPoint parse_origin(const std::string& text, const std::string& option) {

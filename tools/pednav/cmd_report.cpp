@@ -73,6 +73,7 @@ struct Walk {
     eval::Truth truth;
     eval::Alignment alignment = eval::Alignment::start_point;
     bool give_start = false;  // start the engine at the truth's start point and heading
+    double user_height_m = 0.0;  // the walker's height when the recording gives it (eval::with_user_height)
 };
 
 struct Result {
@@ -89,7 +90,8 @@ std::vector<Walk> recording_walks(const std::string& data, Skip skip) {
     std::vector<Walk> w;
     for (const eval::RecordedWalk& recorded : eval::recorded_walks(data)) {
         if (!exists(recorded.input)) continue;
-        Walk walk{recorded.name, recorded.mount, recorded.input, {}, {}, recorded.alignment, recorded.give_start};
+        Walk walk{recorded.name,      recorded.mount,      recorded.input,       {}, {}, recorded.alignment,
+                  recorded.give_start, recorded.user_height_m};
         try {
             walk.truth = eval::read_walk_truth(recorded);
             w.push_back(std::move(walk));
@@ -104,7 +106,7 @@ Result run_walk(const Walk& walk, const std::string& config, const std::vector<s
     Result r;
     r.walk = walk;
     ReplayOptions o;
-    o.config_json = config;
+    o.config_json = eval::with_user_height(config, walk.user_height_m);
     o.plugin_dirs = plugin_dirs;
     o.mount = walk.mount;
     std::vector<const pn_record_header_t*> records;

@@ -54,7 +54,15 @@ std::string humolire_to_geojson(const SourceFile& map_data, const MapConversion&
             src.fail(std::string("/") + unread, std::string("MapEditor ") + unread +
                                                     " are not read from this format (only links, as walls)");
 
-    detail::MapWriter out(conversion, conversion.start_source_m.value_or(detail::SourcePoint{0.0, 0.0}));
+    // HuMoLiRe's metres have y up from the image's bottom edge (the image is
+    // y_range[1] pixels tall): (x, y) is (x, height - y) in image metres.
+    const json& y_range = src.at(doc, "", "y_range");
+    if (!y_range.is_array() || y_range.size() != 2 || !y_range[1].is_number() || !std::isfinite(y_range[1].get<double>()))
+        src.fail("/y_range", "not a [first, last] pair of pixel rows: " + y_range.dump());
+    const double image_height_m = y_range[1].get<double>() * scale;
+    const detail::SourcePoint start = conversion.start_source_m.value_or(detail::SourcePoint{0.0, 0.0});
+    const detail::SourcePoint start_image_m{start[0], image_height_m - start[1]};
+    detail::MapWriter out(conversion, start_image_m);
     if (doc.contains("height")) out.top("pednav:floor_height_m", src.number(doc, "", "height"));
     const json& links = src.at(doc, "", "links");
     if (!links.is_array()) src.fail("/links", "not an array");
@@ -72,7 +80,7 @@ std::string humolire_to_geojson(const SourceFile& map_data, const MapConversion&
         json props = {{"source", "link " + (link.contains("id") ? link["id"].dump() : std::to_string(i))}};
         out.line("wall", layer - start_floor, ends, std::move(props));
     }
-    if (conversion.start_source_m) out.point("landmark", 0, *conversion.start_source_m, {{"name", "start"}});
+    if (conversion.start_source_m) out.point("landmark", 0, start_image_m, {{"name", "start"}});
     return out.dump();
 }
 

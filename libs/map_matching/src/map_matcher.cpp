@@ -9,11 +9,16 @@ namespace pednav::map_matching {
 
 using indoor_map::Point2;
 
+namespace {
+constexpr int kOutputHistory = 1024;  // output positions kept for retracing (16 KiB)
+}  // namespace
+
 MapMatcher::MapMatcher(const MapMatcherConfig& c) : c_(c), altimeter_(c.baro) {
     if (!(c.wall_cell_m > 0)) throw std::invalid_argument("wall_cell_m must be positive");
     if (!(c.map_floor_margin_m >= 0)) throw std::invalid_argument("map_floor_margin_m must not be negative");
     if (!(c.altitude_zone_max_rate_mps >= 0)) throw std::invalid_argument("altitude_zone_max_rate_mps must not be negative");
     if (!(c.wall_clearance_m >= 0)) throw std::invalid_argument("wall_clearance_m must not be negative");
+    if (!(c.mode_cell_m > 0)) throw std::invalid_argument("mode_cell_m must be positive");
     filter_ = std::make_unique<ParticleFilter>(c.filter, nullptr);  // checks the filter's config
 }
 
@@ -25,6 +30,7 @@ double MapMatcher::floor_height_m() const {
 void MapMatcher::set_map(indoor_map::Map map) {
     map_ = std::make_unique<indoor_map::IndexedMap>(std::move(map), c_.wall_cell_m);
     filter_ = std::make_unique<ParticleFilter>(c_.filter, map_.get());
+    route_ = std::make_unique<CloudRoute>(c_.mode_cell_m, c_.filter.particles, kOutputHistory);
 }
 
 // The track starts with the same heading (the engine gives both the same
@@ -57,6 +63,8 @@ void MapMatcher::ensure_started(const TrackPosition* p) {
     cloud_ = filter_->estimate();
     live_ = static_cast<int>(filter_->particles().size());
     anchor_map_ = output_ = at;
+    route_->clear_outputs();
+    route_->record_output(output_);
     const TrackPosition& t = p ? *p : last_track_;
     anchor_track_[0] = (p || has_track_) ? t.pos_enu_m[0] : at.e_m;
     anchor_track_[1] = (p || has_track_) ? t.pos_enu_m[1] : at.n_m;
@@ -98,6 +106,26 @@ Point2 MapMatcher::move_clear_of_walls(const Point2& from, const Point2& to) con
     return from;
 }
 
+void MapMatcher::anchor_at_mode() {
+    const std::vector<Particle>& particles = filter_->particles();
+    route_->index(particles);
+    const int k = route_->mode_particle(&map_->walls, filter_->floor(), particles);
+    const Particle& best = particles[static_cast<size_t>(k >= 0 ? k : filter_->nearest(cloud_.mean))];
+    anchor_map_ = {best.e_m, best.n_m};
+}
+
+// The output's move towards `to`: straight when no wall is in the way, else
+// sliding along the walls in the way when that brings it within a cell of
+// `to`, else round through the cloud or back along its track.
+Point2 MapMatcher::move_output(const Point2& to) {
+    const int floor = filter_->floor();
+    if (!map_->walls.crosses_wall(floor, output_, to)) return to;
+    const Point2 slid = move_clear_of_walls(output_, to);
+    if (std::hypot(slid.e_m - to.e_m, slid.n_m - to.n_m) < c_.mode_cell_m) return slid;
+    Point2 waypoint;
+    return route_->next_waypoint(map_->walls, floor, output_, to, waypoint) ? waypoint : slid;
+}
+
 void MapMatcher::on_baro(int64_t t_ns, double pressure_pa) {
     altimeter_.push(t_ns, pressure_pa);
     if (map_ && filter_->started() && altimeter_.ready()) update_floor();
@@ -107,6 +135,14 @@ void MapMatcher::on_baro(int64_t t_ns, double pressure_pa) {
 // above the start; a floor is floor_height_m of it. The altitude's low-pass
 // (time constant baro_smoothing_s) lags a climb by rate x time constant; the
 // floor decision adds that back.
+//
+// A floor is where the walker arrives: where most of the cloud is on a
+// connector linking the two floors, the floor changes once the altitude has
+// come within map_floor_margin_m of the other floor's level (the flight above a
+// half-way landing still belongs to the floor left, and noise on the landing,
+// exactly between two floors, cannot flip it). Elsewhere (a map that links
+// no floors, or a cloud that is not on the connector) the altitude past half
+// a floor by baro_floor_hysteresis_m decides.
 void MapMatcher::update_floor() {
     const double h = floor_height_m();
     const double altitude = altimeter_.altitude_m() + altimeter_.vertical_rate_mps() * c_.baro.smoothing_s;
@@ -115,28 +151,27 @@ void MapMatcher::update_floor() {
         const double above = altitude - f * h;  // m above the cloud's floor
         const int to = above > 0 ? f + 1 : f - 1;
         const double past_half = std::abs(above) - 0.5 * h;
-        // On a connector the floor is the altitude's rounded half up (a
-        // landing half-way belongs to the floor above, as a floor index is a
-        // height rounded), with a band of map_floor_margin_m below the half
-        // against noise: up at the half, down margin below it.
-        if (past_half < (to > f ? 0.0 : c_.map_floor_margin_m)) return;
+        if (past_half < 0) return;
+        const bool arrived = to > f ? altitude >= to * h - c_.map_floor_margin_m : altitude <= to * h + c_.map_floor_margin_m;
         const bool certain = past_half > c_.baro.floor_hysteresis_m;
-        if (!certain && filter_->share_on_link(to) < 0.5) return;
+        if (!arrived && !certain) return;
+        if (!(filter_->share_on_link(to) >= 0.5 ? arrived : certain)) return;
         const bool recovered = filter_->change_floor(to, output_);
         altimeter_.set_floor(to);
         cloud_ = filter_->estimate();
         live_ = static_cast<int>(filter_->particles().size());
         if (recovered) recovered_pending_ = true;
         note(recovered ? MatchEvent::floor_recovery : MatchEvent::floor_change);
-        const int k = filter_->nearest(cloud_.mean);
-        const Particle& best = filter_->particles()[static_cast<size_t>(k)];
-        anchor_map_ = output_ = {best.e_m, best.n_m};  // another floor: nothing to cross on the way
+        anchor_at_mode();
+        output_ = anchor_map_;  // another floor: nothing to cross on the way
+        route_->clear_outputs();
+        route_->record_output(output_);
         anchor_track_[0] = last_track_.pos_enu_m[0];
         anchor_track_[1] = last_track_.pos_enu_m[1];
     }
 }
 
-void MapMatcher::on_stride(int64_t, double de, double dn) {
+void MapMatcher::on_stride(int64_t t_ns, double de, double dn) {
     if (!map_) return;
     ensure_started(nullptr);
     const StepReport r = filter_->step(de, dn, output_);
@@ -146,14 +181,26 @@ void MapMatcher::on_stride(int64_t, double de, double dn) {
         note(r.stalled ? MatchEvent::stall_recovery : MatchEvent::recovery);
     }
     cloud_ = filter_->estimate();
-    const int k = filter_->nearest(cloud_.mean);
-    const Particle& best = filter_->particles()[static_cast<size_t>(k)];
-    anchor_map_ = {best.e_m, best.n_m};
-    anchor_track_[0] = last_track_.pos_enu_m[0];
-    anchor_track_[1] = last_track_.pos_enu_m[1];
+    anchor_at_mode();
+    // The track's position at the end of the stride: the latest one when it
+    // is that old already, else the next one (a position filter emits a
+    // step's STRIDE before the POSITION at the same time; the track before
+    // the step would count the step twice).
+    if (has_track_ && last_track_.t_ns >= t_ns) {
+        anchor_track_[0] = last_track_.pos_enu_m[0];
+        anchor_track_[1] = last_track_.pos_enu_m[1];
+        anchor_pending_ = false;
+    } else {
+        anchor_pending_ = true;
+        anchor_pending_t_ns_ = t_ns;
+    }
     // A recovery restarts the output track where the new cloud is (the
     // position says so with PN_POSITION_FLAG_RECOVERED): the old one was lost.
-    if (r.recovered) output_ = anchor_map_;
+    if (r.recovered) {
+        output_ = anchor_map_;
+        route_->clear_outputs();
+        route_->record_output(output_);
+    }
     reset_drift();
 }
 
@@ -198,12 +245,18 @@ MatchedPosition MapMatcher::on_position(const TrackPosition& p) {
         return out;
     }
     if (first || !filter_->started()) ensure_started(&p);
+    if (anchor_pending_ && p.t_ns >= anchor_pending_t_ns_) {
+        anchor_track_[0] = p.pos_enu_m[0];
+        anchor_track_[1] = p.pos_enu_m[1];
+        anchor_pending_ = false;
+    }
     // The track's motion since the latest step, turned and scaled as the cloud says.
     const double de = p.pos_enu_m[0] - anchor_track_[0], dn = p.pos_enu_m[1] - anchor_track_[1];
     const double c = std::cos(cloud_.heading_rad), s = std::sin(cloud_.heading_rad);
     const double k = cloud_.scale > 0 ? cloud_.scale : 1.0;
     const Point2 want{anchor_map_.e_m + k * (de * c + dn * s), anchor_map_.n_m + k * (dn * c - de * s)};
-    output_ = move_clear_of_walls(output_, want);
+    output_ = move_output(want);
+    route_->record_output(output_);
     out.pos_enu_m[0] = output_.e_m;
     out.pos_enu_m[1] = output_.n_m;
     if (altimeter_.ready()) out.pos_enu_m[2] = start_[2] + altimeter_.altitude_m();

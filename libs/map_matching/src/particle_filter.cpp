@@ -4,6 +4,7 @@
 // regeneration.cpp, floor changes in floor_change.cpp.
 #include "pednav_map_matching/particle_filter.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -21,7 +22,7 @@ ParticleFilter::ParticleFilter(const ParticleFilterConfig& c, const indoor_map::
     require(c.particles >= 1 && c.particles <= 100000, "particles must be in [1, 100000]");
     require(c.scale_min > 0 && c.scale_min <= c.scale_max, "scale_min must be in (0, scale_max]");
     require(c.init_position_sd_m >= 0 && c.init_heading_sd_rad >= 0 && c.heading_walk_sd_rad >= 0 &&
-                c.step_length_sd >= 0 && c.position_sd_m >= 0 && c.regen_heading_sd_rad >= 0 &&
+                c.step_length_sd >= 0 && c.scale_walk_sd >= 0 && c.position_sd_m >= 0 && c.regen_heading_sd_rad >= 0 &&
                 c.recovery_heading_sd_rad >= 0,
             "standard deviations must not be negative");
     require(c.regen_radius_m >= 0, "regen_radius_m must not be negative");
@@ -120,9 +121,13 @@ StepReport ParticleFilter::step(double de, double dn, const Point2& anchor) {
     const bool zones = map_ && map_->zones.has_kind(floor_, indoor_map::ZoneKind::no_particles);
     const double length_halfwidth = std::sqrt(3.0) * c_.step_length_sd;
     const double position_halfwidth = std::sqrt(3.0) * c_.position_sd_m;
+    const double scale_halfwidth = std::sqrt(3.0) * c_.scale_walk_sd;
     for (size_t i = 0; i < particles_.size(); ++i) {
         Particle q = particles_[i];
         if (c_.heading_walk_sd_rad > 0) turn(q, c_.heading_walk_sd_rad * rng_.normal());
+        if (scale_halfwidth > 0)
+            q.scale = std::clamp(q.scale * (1.0 + scale_halfwidth * (2.0 * rng_.uniform() - 1.0)), c_.scale_min,
+                                 c_.scale_max);
         // Length and position noise uniform with the configured standard
         // deviations (half-width sqrt(3) sd): their shape does not matter to
         // the cloud, and uniforms cost a fraction of normals.

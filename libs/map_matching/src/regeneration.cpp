@@ -29,7 +29,10 @@ bool ParticleFilter::passes_backtracking(const Particle& p) const {
 }
 
 // ProposeNewParticle: uniform in the disc of the radius around the parent,
-// heading offset around heading_center, scale uniform in its range.
+// heading offset around heading_center. The scale is the parent's when the
+// scales walk (scale_walk_sd > 0: each particle's scale is estimated, and the
+// walls that selected the parent's keep selecting), else uniform in its range
+// as the paper draws it.
 Particle ParticleFilter::propose_around(const Particle& parent, double radius_m, double heading_center,
                                         double heading_sd) {
     Particle q;
@@ -38,7 +41,7 @@ Particle ParticleFilter::propose_around(const Particle& parent, double radius_m,
     q.e_m = parent.e_m + de;
     q.n_m = parent.n_m + dn;
     set_heading(q, heading_center + heading_sd * rng_.normal());
-    q.scale = rng_.uniform(c_.scale_min, c_.scale_max);
+    q.scale = c_.scale_walk_sd > 0 && parent.scale > 0 ? parent.scale : rng_.uniform(c_.scale_min, c_.scale_max);
     return q;
 }
 
@@ -82,7 +85,7 @@ void ParticleFilter::recover(const Point2& anchor) {
     // The heading offsets the cloud had before it died are gone; start from
     // the one the recovery is centred on.
     const double heading_center = last_heading_rad_;
-    Particle centre{};
+    Particle centre{};  // scale 0: proposals draw theirs uniform in the range
     centre.e_m = anchor.e_m;
     centre.n_m = anchor.n_m;
     const int n_max = c_.particles;

@@ -14,6 +14,7 @@
 #include <pednav_indoor_map/geometry_2d.hpp>
 #include <pednav_indoor_map/map_check.hpp>
 #include <pednav_indoor_map/map_convert.hpp>
+#include <pednav_indoor_map/wall_crossings.hpp>
 
 using namespace pednav::indoor_map;
 
@@ -63,7 +64,7 @@ size_t count_kind(const nlohmann::json& doc, const std::string& kind) {
 
 }  // namespace
 
-TEST_CASE("convert humolire: 396 walls of a 70 m x 36 m floor, y turned from down the image to north") {
+TEST_CASE("convert humolire: 396 walls of a 70 m x 36 m floor, in HuMoLiRe's metres (y up from the image's bottom edge)") {
     const std::string doc = humolire_to_geojson(source(kData + "/humolire-phone/maps/map_data.json"), {});
     const Map m = read_geojson_map(doc, std::nullopt);
     CHECK(m.walls.size() == 396);
@@ -71,35 +72,58 @@ TEST_CASE("convert humolire: 396 walls of a 70 m x 36 m floor, y turned from dow
     CHECK(m.floors == std::vector<int>{0});
     CHECK(m.floor_height_m == 4.5);
     const Extent x = wall_extent(m, 0);
-    // Pixels 3.97 to 1753.60 across and 3.63 to 911.21 down, at 0.04 m per pixel.
+    // Pixels 3.97 to 1753.60 across and 3.63 to 911.21 down an image 915
+    // pixels tall, at 0.04 m per pixel.
     CHECK(x.e0 == doctest::Approx(0.1589).epsilon(1e-3));
     CHECK(x.e1 == doctest::Approx(70.1442).epsilon(1e-4));
-    CHECK(x.n0 == doctest::Approx(-36.4486).epsilon(1e-4));
-    CHECK(x.n1 == doctest::Approx(-0.1452).epsilon(1e-3));
+    CHECK(x.n0 == doctest::Approx(36.6 - 36.4486).epsilon(1e-3));
+    CHECK(x.n1 == doctest::Approx(36.6 - 0.1452).epsilon(1e-4));
     CHECK(check_map(doc, std::nullopt, {std::nullopt, 0.3}).empty());
 }
+
+namespace {
+// A walk's start and landmarks as keypoints.json gives them (m), in order.
+std::vector<Point2> humolire_keypoints(const std::string& walk) {
+    const SourceFile kp_file = source(kData + "/humolire-phone/" + walk + "/keypoints.json");
+    const nlohmann::json kp = nlohmann::json::parse(kp_file.text);
+    std::vector<Point2> points = {{kp["starting_position"]["x"], kp["starting_position"]["y"]}};
+    for (int k = 0; k < kp["count"].get<int>(); ++k)
+        points.push_back({kp[std::to_string(k)]["x"], kp[std::to_string(k)]["y"]});
+    return points;
+}
+}  // namespace
 
 TEST_CASE("convert humolire: every walk's start and landmarks stand clear of the walls, inside the building") {
     const std::string doc = humolire_to_geojson(source(kData + "/humolire-phone/maps/map_data.json"), {});
     const Map m = read_geojson_map(doc, std::nullopt);
     for (const char* walk : {"user1_straight", "user1_8_shape", "user1_square_2x", "user3_forward"}) {
         CAPTURE(walk);
-        const SourceFile kp_file = source(kData + "/humolire-phone/" + walk + "/keypoints.json");
-        const nlohmann::json kp = nlohmann::json::parse(kp_file.text);
-        std::vector<Point2> points = {image_metres_to_local(kp["starting_position"]["x"], kp["starting_position"]["y"], {0, 0})};
-        for (int k = 0; k < kp["count"].get<int>(); ++k)
-            points.push_back(image_metres_to_local(kp[std::to_string(k)]["x"], kp[std::to_string(k)]["y"], {0, 0}));
         double clearance_m = INFINITY;
-        for (const Point2& p : points) {
+        for (const Point2& p : humolire_keypoints(walk)) {  // local metres as they are
             clearance_m = std::min(clearance_m, nearest_wall_m(m, p, 0));
             CHECK(check_map(doc, std::nullopt, {MapStart{p, 0}, 0.5}).empty());
         }
-        // The landmarks lie in corridors: the closest is 0.64 m from a wall.
+        // The landmarks lie in corridors: the closest is 0.66 m from a wall.
         CHECK(clearance_m > 0.6);
         CHECK(clearance_m < 1.5);
     }
-    // The same walk's start with the image's y axis kept pointing down lies outside the building.
-    CHECK(!check_map(doc, std::nullopt, {MapStart{{7.147, 6.154}, 0}, 0.5}).empty());
+}
+
+TEST_CASE("convert humolire: the closed walks' landmarks join through corridors only with y up") {
+    // The square and the figure eight turn left at every corner (the
+    // gyroscope's yaw grows by 682 deg over user1_square_2x): with y up their
+    // landmarks are joined by straight corridors; with y taken down the image
+    // (the walks mirrored) the same lines go through walls.
+    const std::string doc = humolire_to_geojson(source(kData + "/humolire-phone/maps/map_data.json"), {});
+    const Map m = read_geojson_map(doc, std::nullopt);
+    for (const char* walk : {"user1_8_shape", "user1_square_2x"}) {
+        CAPTURE(walk);
+        std::vector<Point2> up = humolire_keypoints(walk), down = up;
+        for (Point2& p : down) p.n_m = 36.6 - p.n_m;
+        const std::vector<int> floors(up.size(), 0);
+        CHECK(wall_crossings(m, up, floors).empty());
+        CHECK(wall_crossings(m, down, floors).size() >= 6);
+    }
 }
 
 TEST_CASE("convert humolire: the walk's start as local (0, 0), and WGS-84 around an origin") {
@@ -111,7 +135,7 @@ TEST_CASE("convert humolire: the walk's start as local (0, 0), and WGS-84 around
     CHECK(m.landmarks[0].p.e_m == 0.0);
     CHECK(m.landmarks[0].p.n_m == 0.0);
     CHECK(wall_extent(m, 0).e0 == doctest::Approx(0.1589 - 7.147).epsilon(1e-3));
-    CHECK(wall_extent(m, 0).n1 == doctest::Approx(-0.1452 + 6.154).epsilon(1e-3));
+    CHECK(wall_extent(m, 0).n1 == doctest::Approx(36.6 - 0.1452 - 6.154).epsilon(1e-3));
     c.origin = pednav::geodesy::GeodeticPoint{47.2, -1.55, 40.0};
     const std::string wgs84 = humolire_to_geojson(source(kData + "/humolire-phone/maps/map_data.json"), c);
     CHECK(nlohmann::json::parse(wgs84)["pednav:origin"] == nlohmann::json::array({-1.55, 47.2, 40.0}));
@@ -177,8 +201,11 @@ TEST_CASE("convert: bad sources are named by file and line or JSON pointer") {
         }
         return std::string("no error");
     };
-    CHECK(error([] { humolire_to_geojson({"m.json", R"({"scale": 0.04, "links": [{"node0": {"x": 1, "y": 2}}]})"}, {}); }) ==
-          "m.json:/links/0/node0/layer: layer is missing");
+    CHECK(error([] {
+              humolire_to_geojson({"m.json", R"({"scale": 0.04, "y_range": [0, 10], "links": [{"node0": {"x": 1, "y": 2}}]})"}, {});
+          }) == "m.json:/links/0/node0/layer: layer is missing");
+    CHECK(error([] { humolire_to_geojson({"m.json", R"({"scale": 0.04, "links": []})"}, {}); }) ==
+          "m.json:/y_range: y_range is missing");
     CHECK(error([] { humolire_to_geojson({"m.json", R"({"scale": -1, "links": []})"}, {}); }) ==
           "m.json:/scale: the scale (m per pixel) must be positive");
     // Found by fuzz_map_humolire: a number beyond a double escaped as nlohmann's out_of_range.

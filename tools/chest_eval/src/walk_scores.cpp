@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <pednav_eval/config_patch.hpp>
 #include <pednav_eval/track.hpp>
 #include <pednav_eval/truth_readers.hpp>
 #include <pednav_io/sensor_log.hpp>
@@ -68,7 +69,7 @@ WalkScore score_recorded(const eval::RecordedWalk& walk, const std::string& conf
     const eval::Truth truth = eval::read_walk_truth(walk);
     const io::SensorLog log = io::read_sensor_file(walk.input);
     ReplayOptions o;
-    o.config_json = config_json;
+    o.config_json = eval::with_user_height(config_json, walk.user_height_m);
     o.plugin_dirs = plugin_dirs;
     o.keep_attitudes = true;
     if (walk.give_start) {

@@ -32,4 +32,18 @@ std::string patched_config(const std::string& preset_json, const nlohmann::json&
     return doc.dump();
 }
 
+std::string with_user_height(const std::string& config_json, double height_m) {
+    if (!(height_m > 0)) return config_json;
+    nlohmann::json doc = nlohmann::json::parse(config_json);
+    if (doc.contains("pipelines") && doc["pipelines"].is_object())
+        for (auto& [name, stages] : doc["pipelines"].items()) {
+            if (!stages.is_object() || !stages.contains("position_filter")) continue;
+            nlohmann::json& filter = stages["position_filter"];
+            if (filter.is_object() && filter.contains("params") && filter["params"].is_object() &&
+                filter["params"].contains("user_height_m"))
+                filter["params"]["user_height_m"] = height_m;
+        }
+    return doc.dump();
+}
+
 }  // namespace pednav::eval

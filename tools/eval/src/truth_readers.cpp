@@ -229,26 +229,25 @@ Truth read_koroglu_gcp(const std::string& path) {
     return t;
 }
 
-Truth read_humolire(const std::string& dir, bool flip_y) {
+Truth read_humolire(const std::string& dir) {
     const std::string kp_path = dir + "/keypoints.json";
     const nlohmann::json kp = read_json(kp_path);
     Truth t;
     t.kind = TruthKind::landmarks;
     t.name = dir;
-    const double sy = flip_y ? -1.0 : 1.0;
     if (!kp.contains("starting_position"))
         throw std::runtime_error(kp_path + ": missing 'starting_position'");
     t.start_x_m = json_number(kp["starting_position"], "x", kp_path);
-    t.start_y_m = sy * json_number(kp["starting_position"], "y", kp_path);
+    t.start_y_m = json_number(kp["starting_position"], "y", kp_path);
     // starting_heading: degrees counter-clockwise from the map's x axis (upstream: x += L cos, y += L sin).
     const double h = json_number(kp, "starting_heading", kp_path);
-    t.start_heading_deg = std::fmod(90.0 - sy * h + 720.0, 360.0);
+    t.start_heading_deg = std::fmod(90.0 - h + 720.0, 360.0);
     const int count = static_cast<int>(json_number(kp, "count", kp_path));
     std::vector<std::array<double, 2>> marks;
     for (int k = 0; k < count; ++k) {
         const std::string key = std::to_string(k);
         if (!kp.contains(key)) throw std::runtime_error(kp_path + ": missing landmark '" + key + "'");
-        marks.push_back({json_number(kp[key], "x", kp_path), sy * json_number(kp[key], "y", kp_path)});
+        marks.push_back({json_number(kp[key], "x", kp_path), json_number(kp[key], "y", kp_path)});
     }
     // references.txt: header lines, then "t 0.0 0.0" per landmark.
     const std::string ref_path = dir + "/references.txt";
@@ -278,14 +277,17 @@ Truth read_humolire(const std::string& dir, bool flip_y) {
     const std::string map = dir + "/../maps/map_data.json";
     if (exists(map)) {
         const nlohmann::json mj = read_json(map);
+        // The walls' pixels have y down the image; the keypoints' metres y up
+        // from its bottom edge, y_range[1] pixels down (as upstream's MapHandler).
         const double scale = mj.value("scale", 0.04);
+        const double height_m = scale * mj.at("y_range").at(1).get<double>();
         for (const auto& link : mj.at("links")) {
             WallLine w;
             w.floor = link.value("layer", 0);
             w.points_m.push_back({scale * link.at("node0").at("x").get<double>(),
-                                  sy * scale * link.at("node0").at("y").get<double>()});
+                                  height_m - scale * link.at("node0").at("y").get<double>()});
             w.points_m.push_back({scale * link.at("node1").at("x").get<double>(),
-                                  sy * scale * link.at("node1").at("y").get<double>()});
+                                  height_m - scale * link.at("node1").at("y").get<double>()});
             t.walls.push_back(std::move(w));
         }
     }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <pednav_eval/walks.hpp>
 
+#include <cstdio>
+#include <fstream>
 #include <stdexcept>
 
 #include <pednav_eval/truth_readers.hpp>
@@ -72,6 +74,20 @@ const std::vector<std::string>& humolire_walk_names() {
     return names;
 }
 
+double humolire_user_height_m(const std::string& data_dir, const std::string& name) {
+    int user = 0;
+    if (std::sscanf(name.c_str(), "user%d_", &user) != 1) return 0.0;
+    std::ifstream in(data_dir + "/humolire-phone/participant.txt");
+    std::string line;
+    while (std::getline(in, line)) {
+        int number = 0;
+        double height_cm = 0.0;
+        if (std::sscanf(line.c_str(), "%d %lf", &number, &height_cm) == 2 && number == user && height_cm > 0)
+            return height_cm / 100.0;
+    }
+    return 0.0;
+}
+
 RecordedWalk humolire_walk(const std::string& data_dir, const std::string& name) {
     RecordedWalk w;
     w.name = "humolire-" + name;
@@ -80,6 +96,7 @@ RecordedWalk humolire_walk(const std::string& data_dir, const std::string& name)
     w.truth_kind = TruthKind::landmarks;
     w.truth_path = w.input;
     w.give_start = true;
+    w.user_height_m = humolire_user_height_m(data_dir, name);
     return w;
 }
 

@@ -14,6 +14,7 @@
 #include "gait_plan.hpp"
 #include "rng.hpp"
 #include "trajectory.hpp"
+#include "truth_floor.hpp"
 
 namespace pednav::sim {
 
@@ -144,6 +145,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
                              options.gnss_sigma_v_m * rng_gnss.normal());
     double last_gm_s = 0.0;
 
+    detail::TruthFloor truth_floor(route.floor_height_m);
     for (size_t k = 0; k < n; ++k) {
         int64_t t_ns = static_cast<int64_t>(std::llround(static_cast<double>(k) * 1e9 / options.rate_hz));
         if (options.time_jitter_s > 0.0 && k > 0)
@@ -176,8 +178,7 @@ SimOutput simulate(const Route& route, const SimOptions& options) {
             ts.vel_enu_mps[i] = s.v_enu_mps[i];
         }
         ts.stance = s.stance;
-        ts.floor = static_cast<int>(
-            std::lround((s.p_enu_m.z() - traj->height_above_floor_m()) / route.floor_height_m));
+        ts.floor = truth_floor.at(s.p_enu_m.z() - traj->height_above_floor_m());
         double heading = 90.0 - s.yaw_enu_rad / kDeg;
         heading = std::fmod(heading, 360.0);
         if (heading < 0.0) heading += 360.0;

@@ -3,11 +3,13 @@
 // to pednav.map/1 documents (docs/maps.md): the MapEditor JSON of HuMoLiRe
 // and the node/link/polygon/arrow text files of rairyuu's MapEditor.
 //
-// Pixels times the source's scale are the source's metres (x right, y down);
-// the converted map's local frame has east = x and north = -y, with (0, 0) at
-// the walk's start when one is known (given, or the rairyuu core's start
-// point), else at the image's top-left corner. Floors are renumbered so that
-// the source's start floor is floor 0.
+// Pixels times the source's scale are image metres (x right, y down); the
+// converted map's local frame has east = x and north = -y (the plan seen from
+// above). Each source states positions in its own metres: rairyuu's in image
+// metres, HuMoLiRe's (keypoints.json) with y up from the image's bottom edge.
+// Local (0, 0) is the walk's start when one is known (given, or the rairyuu
+// core's start point), else the origin of the source's metres. Floors are
+// renumbered so that the source's start floor is floor 0.
 #pragma once
 
 #include <array>
@@ -24,7 +26,8 @@ struct MapConversion {
     // Write WGS-84 around this origin (the geodetic position of local (0, 0)),
     // else local-enu metres.
     std::optional<geodesy::GeodeticPoint> origin;
-    // The walk's start in the source's metres (x right, y down): local (0, 0).
+    // The walk's start in the source's metres (rairyuu: x right, y down the
+    // image; HuMoLiRe: x right, y up from the image's bottom edge): local (0, 0).
     std::optional<std::array<double, 2>> start_source_m;
 };
 
@@ -41,8 +44,14 @@ inline Point2 image_metres_to_local(double x_m, double y_m, const std::array<dou
 }
 
 // HuMoLiRe's map_data.json: "links" of "node0"/"node1" {x, y} pixels and
-// their "layer", "scale" in m per pixel, "start_floor", "height" (floor
-// height, m). Throws std::runtime_error naming the file and JSON pointer.
+// their "layer", "scale" in m per pixel, "y_range" (the image's rows, px),
+// "start_floor", "height" (floor height, m). HuMoLiRe's metres (its
+// keypoints, start points and headings) have y up from the image's bottom
+// edge: y_m = y_range[1] x scale - image y_m (upstream's MapHandler turns
+// its walls so), which keeps the walks' turns in the sense the gyroscope
+// measures them. Without a start, local (0, 0) is that frame's origin, so a
+// keypoint (x, y) is local (x, y). Throws std::runtime_error naming the file
+// and JSON pointer.
 std::string humolire_to_geojson(const SourceFile& map_data, const MapConversion& conversion);
 
 // rairyuu's MapEditor files. core.txt: "floor", "height", "start",

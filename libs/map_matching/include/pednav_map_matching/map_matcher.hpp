@@ -3,23 +3,26 @@
 // (positions between steps, one displacement per step) and the barometer, and
 // gives positions that stay inside the map.
 //
-// - Steps move the cloud (particle_filter.hpp). The output is the live
-//   particle nearest the cloud's mean: the mean itself may stand in a wall
-//   between two groups of particles.
+// - Steps move the cloud (particle_filter.hpp). The output is the particle at
+//   the cloud's mode (cloud_route.hpp): the mean itself may stand in a wall
+//   between two groups of particles, and the particle nearest it in the
+//   smaller group.
 // - Between steps the output follows the dead-reckoned track from the last
 //   step's estimate, rotated by the cloud's heading offset and scaled.
 // - The output track never crosses a wall: a move that would is cut short of
 //   the first wall in its way (by wall_clearance_m) and slides along it for
-//   the rest, so that it rounds corners; it catches up with the estimate
-//   once the estimate is in sight again. A recovery (the cloud
+//   the rest, so that it rounds corners; where that does not bring it to the
+//   estimate, it goes round through the cloud, or back along its own track
+//   (CloudRoute::next_waypoint). A recovery (the cloud
 //   was lost and reseeded) restarts the output track at the new cloud, and
 //   the position that follows is flagged recovered.
-// - Floors come from the barometer: altitude / floor height, rounded, with the
-//   altimeter's hysteresis either side of the half floor. Where most of the
-//   cloud is on a connector linking the two floors (the map says the floor
-//   may change there) the band is narrower: up at the half, down
-//   map_floor_margin_m below it. A floor change moves the cloud through the
-//   connectors (ParticleFilter::change_floor).
+// - Floors come from the barometer. A floor is where the walker arrives:
+//   where most of the cloud is on a connector linking two floors (the map
+//   says the floor may change there), the floor changes once the altitude has
+//   come within map_floor_margin_m of the other floor's level, so a landing
+//   half-way up belongs to the floor left. Elsewhere the altitude past half a
+//   floor by the altimeter's hysteresis decides. A floor change moves the
+//   cloud through the connectors (ParticleFilter::change_floor).
 // - In an altitude-update zone the barometer's drift is reset to the zone's
 //   height (BarometricAltimeter::set_altitude) while the walker is level. On
 //   a floor the map gives no altitude zone, with floor_level_reset, anywhere
@@ -35,6 +38,7 @@
 #include <pednav_barometry/barometric_altimeter.hpp>
 #include <pednav_indoor_map/indexed_map.hpp>
 
+#include "cloud_route.hpp"
 #include "particle_filter.hpp"
 
 namespace pednav::map_matching {
@@ -43,11 +47,12 @@ struct MapMatcherConfig {
     ParticleFilterConfig filter;
     barometry::BarometricAltimeterConfig baro;
     double wall_cell_m;                 // grid cell of the wall and zone indexes, m
-    double map_floor_margin_m;          // on a connector, the floor changes this far past half a floor, m
+    double map_floor_margin_m;          // on a connector, the floor changes this close to the next floor's level, m
     double altitude_zone_max_rate_mps;  // altitude zones reset the drift only below this vertical rate
     double wall_clearance_m;            // an output stopped by a wall stands this far short of it, m
     bool floor_level_reset;             // on a floor without altitude zones, level and off connectors, the
                                         // altitude is the floor's (floor index x floor height)
+    double mode_cell_m;                 // cells in which the cloud's mode is counted, m
 };
 
 // Fills a config from a params view (any type with number(key),
@@ -63,6 +68,7 @@ MapMatcherConfig map_matcher_config(Params& v) {
     c.altitude_zone_max_rate_mps = v.number("altitude_zone_max_rate_mps");
     c.wall_clearance_m = v.number("wall_clearance_m");
     c.floor_level_reset = v.boolean("floor_level_reset");
+    c.mode_cell_m = v.number("mode_cell_m");
     return c;
 }
 
@@ -119,10 +125,14 @@ private:
     bool on_connector(const indoor_map::Point2& p) const;
     void note(MatchEvent e);
     indoor_map::Point2 move_clear_of_walls(const indoor_map::Point2& from, const indoor_map::Point2& to) const;
+    indoor_map::Point2 move_output(const indoor_map::Point2& to);
+    // Anchors the output at the cloud's mode after a step or a floor change.
+    void anchor_at_mode();
 
     MapMatcherConfig c_;
     std::unique_ptr<indoor_map::IndexedMap> map_;
     std::unique_ptr<ParticleFilter> filter_;
+    std::unique_ptr<CloudRoute> route_;
     barometry::BarometricAltimeter altimeter_;
     bool has_start_ = false;
     double start_[3] = {0, 0, 0};
@@ -131,6 +141,8 @@ private:
     // The output follows the track from these: where the track and the
     // estimate were at the latest step.
     double anchor_track_[2] = {0, 0};
+    bool anchor_pending_ = false;      // anchor_track_ is the next position at or after this time
+    int64_t anchor_pending_t_ns_ = 0;
     indoor_map::Point2 anchor_map_{0, 0};
     indoor_map::Point2 output_{0, 0};
     CloudEstimate cloud_{};

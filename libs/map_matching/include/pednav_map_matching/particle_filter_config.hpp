@@ -16,6 +16,7 @@ struct ParticleFilterConfig {
     double init_heading_sd_rad;       // heading offsets of the first cloud
     double heading_walk_sd_rad;       // heading offset random walk, per step
     double step_length_sd;            // relative noise on each particle's step length, per step
+    double scale_walk_sd;             // relative random walk of each particle's step scale, per step
     double position_sd_m;             // position noise per step, per axis
     double regen_radius_m;            // Algorithm 1's Radius: new particles within it of a survivor
     int regen_tries;                  // Algorithm 1's TryTimeMax
@@ -43,6 +44,7 @@ ParticleFilterConfig particle_filter_config(Params& v, const char* prefix = "") 
     c.init_heading_sd_rad = v.number(key("init_heading_sd_rad"));
     c.heading_walk_sd_rad = v.number(key("heading_walk_sd_rad"));
     c.step_length_sd = v.number(key("step_length_sd"));
+    c.scale_walk_sd = v.number(key("scale_walk_sd"));
     c.position_sd_m = v.number(key("position_sd_m"));
     c.regen_radius_m = v.number(key("regen_radius_m"));
     c.regen_tries = static_cast<int>(v.integer(key("regen_tries")));

@@ -17,4 +17,10 @@ namespace pednav::eval {
 // is not JSON or the patch is not a JSON object.
 std::string patched_config(const std::string& preset_json, const nlohmann::json& patch);
 
+// `config_json` with the walker's height given to every position filter that
+// takes one (its params list `user_height_m`, as a preset lists every
+// parameter): what an app that knows its user does. A height <= 0 (unknown)
+// leaves the config as it is.
+std::string with_user_height(const std::string& config_json, double height_m);
+
 }  // namespace pednav::eval

@@ -38,9 +38,10 @@ Truth read_koroglu_gcp(const std::string& gcp_csv);
 
 // humolire-phone walk folder (keypoints.json + references.txt): landmark k at
 // reference time k, the known start point and heading, and the walls of
-// ../maps/map_data.json when present. The map's own frame is kept (x right,
-// y as stored); flip_y negates y (for a y-down image frame).
-Truth read_humolire(const std::string& walk_dir, bool flip_y = false);
+// ../maps/map_data.json when present, all in the dataset's metres: x right,
+// y up from the map image's bottom edge (the walls' pixels are turned so,
+// as pednav map convert --from humolire does).
+Truth read_humolire(const std::string& walk_dir);
 
 // IPIN competition logfile or ground-truth file: every "POSI;t;counter;lat;lon;floor;building"
 // line, converted to metres east/north of the first POSI point.

@@ -36,6 +36,7 @@ struct RecordedWalk {
     Alignment alignment = Alignment::none;
     bool give_start = false;  // the engine starts at the truth's start point and heading
     double gyro_range_radps = 0.0;  // the sensor's gyro range where it clips in these walks, else 0
+    double user_height_m = 0.0;     // the walker's height where the recording gives it (with_user_height), else 0
 };
 
 // koroglu-foot-gcp: SensorConnectData_<n>.csv, a foot at 200 Hz, and the
@@ -59,9 +60,14 @@ constexpr double kIpolLegM = 10.0;
 RecordedWalk ipol_walk(const std::string& data_dir, const std::string& trial, const std::string& part);
 
 // humolire-phone: <name>/, a handheld phone (handheld pipeline), landmarks on a
-// map; the engine is started at the known start point and heading.
+// map; the engine is started at the known start point and heading, and told
+// the walker's height (participant.txt).
 const std::vector<std::string>& humolire_walk_names();
 RecordedWalk humolire_walk(const std::string& data_dir, const std::string& name);
+// The height of walk "user<N>_..."'s walker, m: participant N of
+// humolire-phone/participant.txt (number, height in cm, gender, age); 0 when
+// the file or the participant is not there.
+double humolire_user_height_m(const std::string& data_dir, const std::string& name);
 
 // Every walk above, in the report's order: koroglu, xio, ipol (lf, rf, lb per
 // trial), humolire. Whether its files exist is not checked here.
