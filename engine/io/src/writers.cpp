@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Track and step CSVs, GeoJSON and GPX.
+// GeoJSON and GPX.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,58 +9,23 @@
 
 #include "pednav_io/gnss_log.hpp"
 #include "pednav_io/writers.hpp"
+#include "writer_fields.hpp"
 
 namespace pednav::io {
 
 namespace {
 
-constexpr double kRadToDeg = 57.29577951308232;
+using detail::class_name;
+using detail::h_sigma_m;
+using detail::has_floor;
+using detail::heading_deg;
+using detail::kRadToDeg;
+using detail::OutFile;
+
 // GeoJSON and GPX keep at most one position per this interval (plus the last).
 constexpr int64_t kThinInterval_ns = 100000000;
 
-class OutFile {
-public:
-    explicit OutFile(const std::string& path) : path_(path), file_(std::fopen(path.c_str(), "w")) {
-        if (file_ == nullptr) throw std::runtime_error(path + ": cannot open for writing");
-    }
-    ~OutFile() {
-        if (file_ != nullptr) std::fclose(file_);
-    }
-    OutFile(const OutFile&) = delete;
-    OutFile& operator=(const OutFile&) = delete;
-    std::FILE* get() { return file_; }
-    void close() {
-        const bool failed = std::ferror(file_) != 0;
-        const int rc = std::fclose(file_);
-        file_ = nullptr;
-        if (failed || rc != 0) throw std::runtime_error(path_ + ": write failed");
-    }
-
-private:
-    std::string path_;
-    std::FILE* file_;
-};
-
-double heading_deg(double heading_rad) {
-    double d = std::fmod(heading_rad * kRadToDeg, 360.0);
-    if (d < 0) d += 360.0;
-    return d;
-}
-
-const char* class_name(int32_t c) {
-    switch (c) {
-        case PN_STRIDE_CLASS_LEVEL: return "level";
-        case PN_STRIDE_CLASS_STAIRS_UP: return "stairs_up";
-        case PN_STRIDE_CLASS_STAIRS_DOWN: return "stairs_down";
-        default: return "unknown";
-    }
-}
-
-bool has_floor(const pn_position_t& p) { return (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) != 0; }
-
 nlohmann::json floor_of(const pn_position_t& p) { return has_floor(p) ? nlohmann::json(p.floor) : nlohmann::json(); }
-
-double h_sigma_m(const pn_position_t& p) { return std::sqrt(std::max(0.0, p.cov_enu_m2[0] + p.cov_enu_m2[4])); }
 
 nlohmann::json point_feature(const nlohmann::json& coordinates, nlohmann::json properties) {
     return {{"type", "Feature"},
@@ -102,53 +67,6 @@ nlohmann::json coordinates(const double enu[3], const Origin& origin) {
 }
 
 }  // namespace
-
-void write_track_csv(const std::string& path, const std::vector<pn_position_t>& positions) {
-    OutFile out(path);
-    std::fprintf(out.get(), "t,x,y,z,heading_deg,floor,cov_xx,cov_xy,cov_yy,cov_zz\n");
-    for (const auto& p : positions) {
-        char floor[16] = "";
-        if (has_floor(p)) std::snprintf(floor, sizeof floor, "%d", p.floor);
-        std::fprintf(out.get(), "%.9f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n",
-                     static_cast<double>(p.header.t_ns) * 1e-9, p.pos_enu_m[0], p.pos_enu_m[1],
-                     p.pos_enu_m[2], heading_deg(p.heading_rad), floor, p.cov_enu_m2[0], p.cov_enu_m2[1],
-                     p.cov_enu_m2[4], p.cov_enu_m2[8]);
-    }
-    out.close();
-}
-
-void write_geo_track_csv(const std::string& path, const std::vector<pn_position_t>& positions,
-                         const Origin& origin) {
-    if (!origin.known)
-        throw std::runtime_error(path + ": latitude and longitude need a geodetic origin (--origin, the config's, "
-                                        "a map's or a GNSS fix's); none is known");
-    OutFile out(path);
-    std::fprintf(out.get(), "t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m\n");
-    for (const auto& p : positions) {
-        double lat = 0, lon = 0, h = 0;
-        geodesy::enu_to_geodetic(origin, p.pos_enu_m, &lat, &lon, &h);
-        char floor[16] = "";
-        if (has_floor(p)) std::snprintf(floor, sizeof floor, "%d", p.floor);
-        std::fprintf(out.get(), "%.9f,%.10f,%.10f,%.4f,%.4f,%s,%s,%.4g\n", static_cast<double>(p.header.t_ns) * 1e-9,
-                     lat, lon, h, heading_deg(p.heading_rad), floor, position_source_name(p.source), h_sigma_m(p));
-    }
-    out.close();
-}
-
-void write_steps_csv(const std::string& path, const std::vector<pn_stride_t>& strides) {
-    OutFile out(path);
-    std::fprintf(
-        out.get(),
-        "index,t_start,t_end,dx,dy,dz,length_m,heading_change_deg,class,cov_xx,cov_xy,cov_yy,cov_zz\n");
-    for (const auto& s : strides) {
-        std::fprintf(out.get(), "%d,%.9f,%.9f,%.6f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n", s.index,
-                     static_cast<double>(s.t_start_ns) * 1e-9, static_cast<double>(s.header.t_ns) * 1e-9,
-                     s.displacement_enu_m[0], s.displacement_enu_m[1], s.displacement_enu_m[2], s.length_m,
-                     s.heading_change_rad * kRadToDeg, class_name(s.stride_class), s.cov_displacement_m2[0],
-                     s.cov_displacement_m2[1], s.cov_displacement_m2[4], s.cov_displacement_m2[8]);
-    }
-    out.close();
-}
 
 void write_geojson(const std::string& path, const std::vector<pn_position_t>& positions,
                    const std::vector<pn_stride_t>& strides, const Origin& origin, const GeoJsonExtras& extras) {
