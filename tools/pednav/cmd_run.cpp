@@ -243,7 +243,8 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     plan.steps_csv = steps;
     plan.geo_csv = geo_csv;
     if (origin.known) plan.geo_origin = origin;
-    plan.keep_positions = !geojson.empty() || !gpx.empty() || !plot.empty() || (!geo_csv.empty() && !origin.known);
+    plan.log_positions = !geojson.empty() || !gpx.empty() || (!geo_csv.empty() && !origin.known);
+    plan.keep_positions = !plot.empty();
     plan.keep_strides = !geojson.empty() || !plot.empty();
     cli::RunOutputs outputs(plan);
     ReplaySession session(options, &outputs);
@@ -286,10 +287,10 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         io::GeoJsonExtras extras;
         extras.position_points = geojson_points;
         if (!log.gnss.empty()) extras.gnss_fixes = &log.gnss;
-        io::write_geojson(geojson, r.positions, r.strides, origin, extras);
+        io::write_geojson(geojson, outputs.position_log(), r.strides, origin, extras);
     }
-    if (!gpx.empty()) io::write_gpx(gpx, r.positions, origin);
-    if (!geo_csv.empty() && !plan.geo_origin.known) io::write_geo_track_csv(geo_csv, r.positions, origin);
+    if (!gpx.empty()) io::write_gpx(gpx, outputs.position_log(), origin);
+    if (!geo_csv.empty() && !plan.geo_origin.known) io::write_geo_track_csv(geo_csv, outputs.position_log(), origin);
     if (!summary.empty()) {
         std::ofstream out(summary);
         nlohmann::json j = io::run_summary_json(log, r.describe_json, outputs.totals(), r.warnings);

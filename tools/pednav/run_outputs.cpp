@@ -15,6 +15,7 @@ void RunOutputs::on_output(const pn_output_t& o) {
                 if (!geo_) geo_ = std::make_unique<io::GeoTrackCsvWriter>(plan_.geo_csv, plan_.geo_origin);
                 geo_->add(o.position);
             }
+            if (plan_.log_positions) position_log_.add(o.position);
             if (plan_.keep_positions) positions_.push_back(o.position);
             break;
         case PN_REC_STRIDE:

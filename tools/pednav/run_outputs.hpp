@@ -2,7 +2,9 @@
 // `pednav run`'s outputs as the engine gives them: the track, steps and
 // geo-track CSVs written a row at a time and flushed after every poll (a run
 // that stops or crashes keeps what it computed), the totals of the summary,
-// and what the outputs written at the end need (GeoJSON, GPX, plot).
+// and what the outputs written at the end need: the positions for GeoJSON,
+// GPX and a late geo CSV in a PositionLog (on disk past a few thousand), and
+// in memory for the plot.
 #pragma once
 
 #include <memory>
@@ -18,7 +20,8 @@ namespace pednav::cli {
 struct RunOutputPlan {
     std::string track_csv, steps_csv, geo_csv;  // "" = not asked for
     io::Origin geo_origin;                      // --geo-csv is written as the run goes when this is known
-    bool keep_positions = false;                // for the outputs written at the end
+    bool log_positions = false;                 // for GeoJSON, GPX, a geo CSV written at the end
+    bool keep_positions = false;                // in memory, for the plot
     bool keep_strides = false;
 };
 
@@ -33,6 +36,7 @@ public:
 
     const io::RunTotals& totals() const { return totals_; }
     size_t steps() const { return steps_; }
+    const io::PositionLog& position_log() const { return position_log_; }
     std::vector<pn_position_t>& positions() { return positions_; }
     std::vector<pn_stride_t>& strides() { return strides_; }
 
@@ -43,6 +47,7 @@ private:
     std::unique_ptr<io::GeoTrackCsvWriter> geo_;
     io::RunTotals totals_;
     size_t steps_ = 0;
+    io::PositionLog position_log_;
     std::vector<pn_position_t> positions_;
     std::vector<pn_stride_t> strides_;
 };

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pednav_io/origin.hpp"
+#include "pednav_io/position_log.hpp"
 #include "pednav_io/sensor_log.hpp"
 
 namespace pednav::io {
@@ -68,6 +69,7 @@ public:
 // std::runtime_error when the origin is not known or on I/O failure.
 void write_geo_track_csv(const std::string& path, const std::vector<pn_position_t>& positions,
                          const Origin& origin);
+void write_geo_track_csv(const std::string& path, const PositionLog& positions, const Origin& origin);
 
 class GeoTrackCsvWriter : public RowWriter {  // write_geo_track_csv
 public:
@@ -93,11 +95,16 @@ struct GeoJsonExtras {
 void write_geojson(const std::string& path, const std::vector<pn_position_t>& positions,
                    const std::vector<pn_stride_t>& strides, const Origin& origin,
                    const GeoJsonExtras& extras = {});
+// The same from positions kept in a PositionLog, read in one pass (the
+// document holds the positions thinned to 0.1 s, the steps and the changes).
+void write_geojson(const std::string& path, const PositionLog& positions, const std::vector<pn_stride_t>& strides,
+                   const Origin& origin, const GeoJsonExtras& extras = {});
 
 // GPX 1.1 track, each point with its source as <type> and its floor in
 // <extensions>. GPX is WGS-84 only: with no known origin the track is placed
 // at lat/lon 0/0 (documented; the file says so in <desc>).
 void write_gpx(const std::string& path, const std::vector<pn_position_t>& positions, const Origin& origin);
+void write_gpx(const std::string& path, const PositionLog& positions, const Origin& origin);
 
 // "inertial", "fused", "gnss", "map" (PN_POSITION_SOURCE_*), "unknown" otherwise.
 const char* position_source_name(int32_t source);
