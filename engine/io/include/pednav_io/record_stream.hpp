@@ -44,7 +44,8 @@ class RecordStream {
 public:
     // Opens the recording and reads its head (format detection, header,
     // preamble). Throws ReadError as read_sensor_file does for a file that
-    // cannot be read at all. merge_window_records 0: no limit.
+    // cannot be read at all. merge_window_records 0: no limit. A column map
+    // given in options must outlive the stream.
     explicit RecordStream(const std::string& path, const ReadOptions& options = {},
                           size_t merge_window_records = kMergeWindowRecords);
     ~RecordStream();
