@@ -251,7 +251,7 @@ TEST_CASE("a NUL byte past the first 64 KiB ends the file there: the records bef
     CHECK_THROWS_WITH(read_sensor_file(path), error.c_str());
 }
 
-TEST_CASE("a CR LF split by the end of the first 256 KiB chunk ends one line, not two") {
+TEST_CASE("a CR LF split by the end of the first 64 KiB chunk ends one line, not two") {
     const std::string dir = temp_dir();
     std::string text = "t,ax,ay,az,gx,gy,gz\r\n";
     size_t lines = 1, i = 0;
@@ -261,15 +261,15 @@ TEST_CASE("a CR LF split by the end of the first 256 KiB chunk ends one line, no
         text += row;
         ++lines;
     };
-    while (text.size() < 262144 - 200) add_row("9.81");
+    while (text.size() < 65536 - 200) add_row("9.81");
     // A comment long enough that the next row's CR is the chunk's last byte, its LF the next chunk's first.
     std::snprintf(row, sizeof row, "%zu.000,0.05,-0.03,9.81,0.001,-0.002,0.0005\r\n", i);
     const size_t row_bytes = std::strlen(row);
-    text += "#" + std::string(262144 - (row_bytes - 1) - text.size() - 3, '-') + "\r\n";
+    text += "#" + std::string(65536 - (row_bytes - 1) - text.size() - 3, '-') + "\r\n";
     ++lines;
     add_row("9.81");
-    REQUIRE(text.size() == 262145);
-    REQUIRE(text[262143] == '\r');
+    REQUIRE(text.size() == 65537);
+    REQUIRE(text[65535] == '\r');
     for (int k = 0; k < 100; ++k) add_row("9.81");
     add_row("nan");  // named by its line
     const size_t nan_line = lines;

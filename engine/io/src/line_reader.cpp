@@ -18,7 +18,7 @@ namespace {
 // must be refused after its first KiB, not after reading all of it.
 constexpr size_t kProbeBytes = 1024;
 constexpr uint64_t kWideProbeBytes = 65536;
-constexpr size_t kChunkBytes = size_t{256} << 10;
+constexpr size_t kChunkBytes = size_t{64} << 10;
 // A pipe or device has no size to read up to; text beyond this is refused.
 constexpr uint64_t kMaxStreamBytes = uint64_t{1} << 30;
 

@@ -37,9 +37,7 @@ class SpillVector {
     static_assert(std::is_trivially_copyable<T>::value, "spilled as bytes");
 
 public:
-    explicit SpillVector(size_t block_values = 8192) : block_values_(block_values) {
-        block_.reserve(block_values);
-    }
+    explicit SpillVector(size_t block_values = 8192) : block_values_(block_values) {}
 
     void push_back(const T& v) {
         if (size_ == 0) first_ = v;
