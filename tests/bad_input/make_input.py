@@ -66,6 +66,8 @@ def make(kind):
         return "empty.csv", ""
     if kind == "header_only":
         return "header_only.csv", HEADER
+    if kind == "nul_midway":  # a NUL byte at the start of line 6002, 372 kB in (a log padded with zeros)
+        return "nul.csv", canonical(rows(0, 6000)) + "\0" + rows(6000, 7000)
     if kind == "truncated_last_line":  # line 1001 cut off while writing
         return "truncated.csv", canonical(rows(0, 999) + "9.99,0.05,-0.0")
     if kind == "binary":

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 #include <pednav_io/gnss_log.hpp>
+#include <pednav_io/record_stream.hpp>
 #include <pednav_io/sensor_log.hpp>
 #include <pednav_io/writers.hpp>
 
@@ -39,7 +40,7 @@ void print_text(const pednav::io::SensorLog& log, bool forced) {
                     s.bad_rows);
     }
     std::printf("\nrecords: %zu IMU, %zu magnetometer, %zu barometer, %zu GNSS, %zu ground truth\n",
-                log.imu.size(), log.mag.size(), log.baro.size(), log.gnss.size(), log.truth.size());
+                log.records.imu, log.records.mag, log.records.baro, log.records.gnss, log.truth.size());
     if (!log.notes.empty()) {
         std::printf("\nnotes:\n");
         for (const auto& n : log.notes) std::printf("  %s\n", n.c_str());
@@ -78,14 +79,14 @@ pednav::io::SensorLog read_any(const std::string& path, const pednav::io::ReadOp
             try {
                 detect_gnss_format(path);
             } catch (const ReadError&) {
-                return read_sensor_file(path, options);  // throws the recording readers' error
+                return scan_sensor_file(path, options);  // throws the recording readers' error
             }
             GnssReadOptions go;
             go.max_issues = options.max_issues;
             return read_gnss_file(path, go);
         }
     }
-    return read_sensor_file(path, options);
+    return scan_sensor_file(path, options);
 }
 
 }  // namespace
@@ -137,8 +138,8 @@ int pednav_cmd_inspect(const std::vector<std::string>& argv) {
         const io::SensorLog log = read_any(path, options);
         io::SensorLog gnss;
         if (!gnss_path.empty()) {
-            if (!log.imu.empty())
-                gnss_options.time.first_epoch_t_s = static_cast<double>(log.imu.front().header.t_ns) * 1e-9;
+            if (log.records.imu > 0)
+                gnss_options.time.first_epoch_t_s = static_cast<double>(log.records.imu_first_t_ns) * 1e-9;
             gnss = io::read_gnss_file(gnss_path, gnss_options);
         }
         if (json) {

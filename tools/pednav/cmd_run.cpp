@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmd_run.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -8,10 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <pednav_io/gnss_log.hpp>
 #include <pednav_io/origin.hpp>
+#include <pednav_io/record_stream.hpp>
 #include <pednav_io/sensor_log.hpp>
 #include <pednav_io/writers.hpp>
 
 #include "cli_common.hpp"
+#include "run_outputs.hpp"
 #include "run_pipeline.hpp"
 #include "run_plot.hpp"
 #include "pednav_strict_json/strict_json.hpp"
@@ -53,6 +57,61 @@ void print_read_messages(const char* what, const pednav::io::SensorLog& log) {
         if (shown++ < 20) std::fprintf(stderr, "%s: line %zu: %s\n", what, i.line, i.message.c_str());
     const size_t issue_count = log.issues.size() + log.issues_not_listed;
     if (issue_count > 20) std::fprintf(stderr, "%s: ... %zu issues in all\n", what, issue_count);
+}
+
+namespace io = pednav::io;
+using pednav::ReplaySession;
+
+// What was pushed of the input.
+struct InputRun {
+    size_t records_pushed = 0;
+    std::vector<pn_gnss_t> input_gnss;  // the input's own GNSS fixes (for the GeoJSON and the summary)
+    std::string read_error;             // the input went bad here; what was read before is run
+};
+
+void show_progress(const io::RecordStream& stream, bool done) {
+    const uint64_t total = stream.bytes_total();
+    pednav::cli::progress_bar(static_cast<size_t>(done ? total : stream.bytes_read()), static_cast<size_t>(total),
+                              nullptr);
+}
+
+// Reads the input a block at a time and pushes it, merged in time order with
+// `fixes` (given with --gnss, in place of the input's own GNSS records).
+InputRun push_input(io::RecordStream& stream, const std::vector<pn_gnss_t>* fixes, ReplaySession& session) {
+    constexpr size_t kBlockRecords = 4096;
+    // A bar for files that take a while to read, when stderr is a terminal.
+    const bool progress = isatty(2) && stream.bytes_total() > (uint64_t{16} << 20);
+    InputRun run;
+    std::vector<io::InputRecord> block;
+    std::vector<const pn_record_header_t*> records;
+    size_t next_fix = 0;
+    try {
+        while (stream.read(block, kBlockRecords) > 0) {
+            records.clear();
+            for (const io::InputRecord& r : block) {
+                if (r.header.type == PN_REC_GNSS) {
+                    if (fixes != nullptr) continue;
+                    run.input_gnss.push_back(r.gnss);
+                }
+                // At equal times the input's records come first (IMU, MAG, BARO, then GNSS).
+                while (fixes != nullptr && next_fix < fixes->size() && (*fixes)[next_fix].header.t_ns < r.header.t_ns)
+                    records.push_back(&(*fixes)[next_fix++].header);
+                records.push_back(&r.header);
+            }
+            session.push(records.data(), records.size());
+            run.records_pushed += records.size();
+            block.clear();
+            if (progress) show_progress(stream, false);
+        }
+    } catch (const io::ReadError& e) {
+        run.read_error = e.what();
+    }
+    records.clear();
+    while (fixes != nullptr && next_fix < fixes->size()) records.push_back(&(*fixes)[next_fix++].header);
+    session.push(records.data(), records.size());
+    run.records_pushed += records.size();
+    if (progress) show_progress(stream, true);
+    return run;
 }
 
 }  // namespace
@@ -168,23 +227,49 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         ro.column_map = &column_map;
         if (format == "auto") ro.format = "column-map";
     }
-    io::SensorLog log = io::read_sensor_file(input, ro);
-    print_read_messages("input", log);
+    io::RecordStream stream(input, ro);
     io::SensorLog gnss_log;
     if (!gnss_path.empty()) {
-        if (!gnss_t0_given && !log.imu.empty())
-            gnss_options.time.first_epoch_t_s = static_cast<double>(log.imu.front().header.t_ns) * 1e-9;
+        int64_t t0_ns = 0;
+        if (!gnss_t0_given && stream.first_imu_t_ns(&t0_ns))
+            gnss_options.time.first_epoch_t_s = static_cast<double>(t0_ns) * 1e-9;
         gnss_log = io::read_gnss_file(gnss_path, gnss_options);
         print_read_messages("gnss", gnss_log);
+    }
+
+    // What the outputs written at the end need is kept; the CSVs are written as the run goes.
+    cli::RunOutputPlan plan;
+    plan.track_csv = output;
+    plan.steps_csv = steps;
+    plan.geo_csv = geo_csv;
+    if (origin.known) plan.geo_origin = origin;
+    plan.log_positions = !geojson.empty() || !gpx.empty() || (!geo_csv.empty() && !origin.known);
+    plan.keep_positions = !plot.empty();
+    plan.keep_strides = !geojson.empty() || !plot.empty();
+    cli::RunOutputs outputs(plan);
+    ReplaySession session(options, &outputs);
+    if (!session.ok()) {
+        std::fprintf(stderr, "pednav run: %s\n", session.result().error.c_str());
+        return 1;
+    }
+    const InputRun in = push_input(stream, gnss_path.empty() ? nullptr : &gnss_log.gnss, session);
+    ReplayResult& r = session.finish();
+    const bool computed = in.records_pushed > 0;
+    outputs.close(in.read_error.empty());
+
+    io::SensorLog log = stream.log();
+    log.gnss = in.input_gnss;
+    print_read_messages("input", log);
+    if (!gnss_path.empty()) {
         io::use_gnss(log, gnss_log);
         std::fprintf(stderr, "input: %s\n", log.notes.back().c_str());
     }
-
-    const ReplayResult r = cli::run_with_progress(options, io::merged_records(log));
     for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    if (!r.error.empty()) {
-        std::fprintf(stderr, "pednav run: %s\n", r.error.c_str());
-        return 1;
+    if (!in.read_error.empty()) {
+        std::fprintf(stderr, "pednav run: %s\n", in.read_error.c_str());
+        if (!computed) return 1;
+        std::fprintf(stderr, "pednav run: the outputs of the %zu records read before it are written\n",
+                     in.records_pushed);
     }
     // Latitude and longitude: the --origin given, else the engine's own (the
     // config's, a map's or its first good GNSS fix), else the truth points' frame.
@@ -196,19 +281,19 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
     }
     if (!origin.known && log.truth_origin.known) origin = log.truth_origin;
     if (origin.utc_ns_at_zero == 0) origin.utc_ns_at_zero = log.utc_ns_at_zero;
-    if (!output.empty()) io::write_track_csv(output, r.positions);
-    if (!steps.empty()) io::write_steps_csv(steps, r.strides);
+    r.positions = std::move(outputs.positions());
+    r.strides = std::move(outputs.strides());
     if (!geojson.empty()) {
         io::GeoJsonExtras extras;
         extras.position_points = geojson_points;
         if (!log.gnss.empty()) extras.gnss_fixes = &log.gnss;
-        io::write_geojson(geojson, r.positions, r.strides, origin, extras);
+        io::write_geojson(geojson, outputs.position_log(), r.strides, origin, extras);
     }
-    if (!gpx.empty()) io::write_gpx(gpx, r.positions, origin);
-    if (!geo_csv.empty()) io::write_geo_track_csv(geo_csv, r.positions, origin);
+    if (!gpx.empty()) io::write_gpx(gpx, outputs.position_log(), origin);
+    if (!geo_csv.empty() && !plan.geo_origin.known) io::write_geo_track_csv(geo_csv, outputs.position_log(), origin);
     if (!summary.empty()) {
         std::ofstream out(summary);
-        nlohmann::json j = io::run_summary_json(log, r.describe_json, r.positions, r.strides, r.warnings);
+        nlohmann::json j = io::run_summary_json(log, r.describe_json, outputs.totals(), r.warnings);
         if (!gnss_path.empty()) j["gnss_input"] = io::sensor_log_json(gnss_log);
         out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         if (!out) throw std::runtime_error("cannot write " + summary);
@@ -223,12 +308,14 @@ int pednav_cmd_run(const std::vector<std::string>& argv) {
         std::fprintf(stderr, "pednav run: %llu plugin failure%s (see the warnings above); outputs written\n",
                      static_cast<unsigned long long>(r.plugin_failures), r.plugin_failures == 1 ? "" : "s");
     }
-    const pn_position_t* last = r.positions.empty() ? nullptr : &r.positions.back();
-    std::printf("samples %zu, positions %zu, steps %zu, distance %.2f m, latency %.3f s\n", log.imu.size(),
-                r.positions.size(), r.strides.size() ? r.strides.size() : r.steps.size(),
-                io::track_length_m(r.positions), static_cast<double>(r.latency_ns) * 1e-9);
-    if (last)
-        std::printf("final position x %.3f m, y %.3f m, z %.3f m, heading %.1f deg\n", last->pos_enu_m[0],
-                    last->pos_enu_m[1], last->pos_enu_m[2], last->heading_rad * 180.0 / M_PI);
-    return r.plugin_failures > 0 ? 1 : 0;
+    const io::RunTotals& totals = outputs.totals();
+    std::printf("samples %zu, positions %zu, steps %zu, distance %.2f m, latency %.3f s\n", log.records.imu,
+                totals.positions, totals.strides ? totals.strides : outputs.steps(), totals.distance_m,
+                static_cast<double>(r.latency_ns) * 1e-9);
+    if (totals.positions > 0) {
+        const pn_position_t& last = totals.last;
+        std::printf("final position x %.3f m, y %.3f m, z %.3f m, heading %.1f deg\n", last.pos_enu_m[0],
+                    last.pos_enu_m[1], last.pos_enu_m[2], last.heading_rad * 180.0 / M_PI);
+    }
+    return r.plugin_failures > 0 || !in.read_error.empty() ? 1 : 0;
 }

@@ -40,7 +40,6 @@ std::string load_config(const std::string& config_path, const std::string& mount
     }
 }
 
-namespace {
 void progress_bar(size_t done, size_t total, void*) {
     const int width = 40;
     const int filled = total ? static_cast<int>(width * done / total) : width;
@@ -49,7 +48,6 @@ void progress_bar(size_t done, size_t total, void*) {
     if (done == total) std::fprintf(stderr, "\n");
     std::fflush(stderr);
 }
-}  // namespace
 
 ReplayResult run_with_progress(ReplayOptions options, const std::vector<const pn_record_header_t*>& records) {
     if (isatty(2) && records.size() > 100000) options.progress = &progress_bar;

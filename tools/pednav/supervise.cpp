@@ -70,13 +70,15 @@ int run_supervised(const char* command, const std::function<int()>& body) {
         const int sig = WTERMSIG(wstatus);
         std::fprintf(stderr,
                      "pednav %s: the run did not complete: the process was killed by signal %d (%s) inside the engine "
-                     "or a plugin; outputs are written at the end of a run, so none were written\n",
+                     "or a plugin; the track and steps CSVs hold the outputs computed before it (written as the run "
+                     "goes), the other outputs are written at the end of a run, so none of them were written\n",
                      command, sig, strsignal(sig));
     } else if (!finished) {
         std::fprintf(stderr,
                      "pednav %s: the run did not complete: the process ended with exit status %d before the run "
-                     "finished (a plugin called exit or _exit?); outputs are written at the end of a run, so none "
-                     "were written\n",
+                     "finished (a plugin called exit or _exit?); the track and steps CSVs hold the outputs computed "
+                     "before it (written as the run goes), the other outputs are written at the end of a run, so none "
+                     "of them were written\n",
                      command, WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1);
     } else {
         std::fprintf(stderr, "pednav %s: the run finished with status %d but the process ended with status %d\n",

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <pednav/pn_engine.h>
 #include <pednav/pn_types.h>
 
 namespace pednav {
@@ -45,6 +46,52 @@ struct ReplayResult {
 
 // `records` must be in non-decreasing time order (io::merged_records gives that).
 ReplayResult replay(const ReplayOptions& options, const std::vector<const pn_record_header_t*>& records);
+
+// Receives a session's outputs as they are polled.
+class OutputHandler {
+public:
+    virtual ~OutputHandler() = default;
+    virtual void on_output(const pn_output_t& output) = 0;
+    // After each round of polling: every 1024 records pushed, and at the end.
+    virtual void on_polled() {}
+};
+
+// replay() a block of records at a time: the same engine calls, warnings and
+// outputs, for an input read as it goes (io::RecordStream).
+class ReplaySession {
+public:
+    // Creates the engine; result().error says why when it could not be (then ok() is false).
+    // Outputs go to `handler`, or into result() when it is null.
+    explicit ReplaySession(const ReplayOptions& options, OutputHandler* handler = nullptr);
+    ~ReplaySession();
+    ReplaySession(const ReplaySession&) = delete;
+    ReplaySession& operator=(const ReplaySession&) = delete;
+
+    bool ok() const { return engine_ != nullptr; }
+    // Pushes the next records (time order). Once a stage's failure policy has
+    // stopped the pipeline they are only counted; false from then on.
+    bool push(const pn_record_header_t* const* records, size_t count);
+    // The total given to options.progress (records pushed, of this many).
+    void set_progress_total(size_t records) { progress_total_ = records; }
+    // Flushes the engine, polls the last outputs and completes result().
+    ReplayResult& finish();
+    ReplayResult& result() { return result_; }
+
+private:
+    void collect();
+
+    ReplayOptions options_;
+    OutputHandler* handler_;
+    ReplayResult result_;
+    pn_engine_t* engine_ = nullptr;
+    size_t pushed_ = 0;           // records given to push(), pushed or not
+    size_t refused_ = 0;
+    size_t stopped_at_ = 0;       // the record the pipeline stopped at
+    size_t stop_warning_ = 0;     // its warning, completed by finish()
+    std::string stop_error_;
+    size_t progress_total_ = 0;
+    bool finished_ = false;
+};
 
 // Builds the engine for `options` (config checked, plugins loaded and
 // created) and tears it down: what replay() would stop on, or "" when none.

@@ -124,20 +124,22 @@ double determinant(const double R[9]) {
            R[2] * (R[3] * R[7] - R[4] * R[6]);
 }
 
-void apply_map(const TextFile& file, const json& map, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> apply_map(InputFile& input, const json& map, LogBuilder& builder, SensorLog& log) {
     check_keys(map, "",
                {"delimiter", "header_line", "comment_prefixes", "time", "accel", "gyro", "mag", "pressure",
                 "axes", "rotation_q_body_from_sensor", "description"});
     TableSpec spec;
     // Header.
-    size_t header_index = first_content_line(file);
+    size_t header_index = first_content_line(input.head());
     if (map.contains("header_line")) {
         if (!map["header_line"].is_number_integer() || map["header_line"].get<int>() < 0) {
             fail("/header_line", "must be a 1-based line number, or 0 when the file has no header");
         }
         const int h = map["header_line"].get<int>();
         header_index = h == 0 ? std::string::npos : static_cast<size_t>(h - 1);
+        if (h > 0) input.extend_head(static_cast<size_t>(h));  // a header further down than the head
     }
+    const TextFile& file = input.head();
     if (map.contains("comment_prefixes")) {
         spec.comment_prefixes.clear();
         for (const auto& p : map["comment_prefixes"]) {
@@ -286,31 +288,58 @@ void apply_map(const TextFile& file, const json& map, LogBuilder& builder, Senso
     }
     log.axes = axes_text;
     builder.note("column map: time " + time_text + ", accelerometer " + a_unit + ", gyroscope " + g_unit);
-    read_table(file, spec, builder);
+    return std::make_unique<TableReader>(input, spec, builder);
 }
 
 }  // namespace
 
-void read_with_column_map(const TextFile& file, const json& map, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> open_with_column_map(InputFile& input, const json& map, LogBuilder& builder,
+                                                SensorLog& log) {
     const json& inner = (map.is_object() && map.contains("column_map")) ? map["column_map"] : map;
     try {
-        apply_map(file, inner, builder, log);
+        return apply_map(input, inner, builder, log);
     } catch (const MapError& e) {
         throw ReadError(
-            file.path, 0,
+            input.path(), 0,
             "column map " + (e.pointer.empty() ? std::string("/") : e.pointer) + ": " + e.message);
     }
 }
 
 bool detect_column_map(const TextFile&) { return false; }
 
-void read_column_map(const TextFile& file, const ReadOptions& options, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> open_column_map(InputFile& input, const ReadOptions& options, LogBuilder& builder,
+                                           SensorLog& log) {
     if (options.column_map == nullptr) {
-        throw ReadError(file.path, 0,
+        throw ReadError(input.path(), 0,
                         "format column-map needs a column map (ReadOptions::column_map / --column-map)");
     }
-    read_with_column_map(file, *options.column_map, builder, log);
+    return open_with_column_map(input, *options.column_map, builder, log);
 }
+
+namespace {
+
+// Rows read by another RowReader, and a note once they have ended.
+class NoteAtEnd : public RowReader {
+public:
+    NoteAtEnd(std::unique_ptr<RowReader> rows, LogBuilder& builder, std::string note)
+        : rows_(std::move(rows)), builder_(builder), note_(std::move(note)) {}
+    bool read_lines(size_t lines) override {
+        if (rows_->read_lines(lines)) return true;
+        if (!note_.empty()) builder_.note(note_);
+        note_.clear();
+        return false;
+    }
+    uint64_t record_types() const override { return rows_->record_types(); }
+    uint64_t bytes_read() const override { return rows_->bytes_read(); }
+    uint64_t bytes_total() const override { return rows_->bytes_total(); }
+
+private:
+    std::unique_ptr<RowReader> rows_;
+    LogBuilder& builder_;
+    std::string note_;
+};
+
+}  // namespace
 
 // The biba-chest-xsens author's conversion of an Xsens MT Manager export:
 // time = SampleTimeFine ticks, gx = Gyr_Z, gy = Gyr_Y, gz = Gyr_X, a = Acc / 9.70
@@ -321,7 +350,8 @@ bool detect_biba_converted_csv(const TextFile& file) {
     return index < file.lines.size() && trim(file.lines[index]) == "time,gx,gy,gz,ax,ay,az,mx,my,mz,p";
 }
 
-void read_biba_converted_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> open_biba_converted_csv(InputFile& input, const ReadOptions&, LogBuilder& builder,
+                                                   SensorLog& log) {
     static const json map = {
         {"delimiter", ","},
         {"time", {{"column", "time"}, {"scale_s", 1e-4}, {"wrap", 4294967296.0}}},
@@ -330,9 +360,11 @@ void read_biba_converted_csv(const TextFile& file, const ReadOptions&, LogBuilde
         {"mag", {{"columns", {"mx", "my", "mz"}}, {"unit", "normalised"}, {"normalised_field_ut", 50.0}}},
         {"pressure", {{"column", "p"}, {"unit", "hPa"}}},
     };
-    read_with_column_map(file, map, builder, log);
+    std::unique_ptr<RowReader> rows = open_with_column_map(input, map, builder, log);
     log.axes = "Xsens sensor frame x, y, z of the original export (the file's x/z swap undone), not levelled";
-    builder.note(
+    // The note follows the rows' own notes, as it did when the file was read whole.
+    return std::make_unique<NoteAtEnd>(
+        std::move(rows), builder,
         "converted Xsens export: accelerometer in g of 9.70 m/s^2 (the author's divisor), columns x/z "
         "swapped back; magnetometer normalised, scaled by a nominal 50 uT; pressure in hPa");
 }

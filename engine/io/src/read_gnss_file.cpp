@@ -130,10 +130,10 @@ SensorLog read_gnss_file(const std::string& path, const GnssReadOptions& options
 }
 
 void use_gnss(SensorLog& log, const SensorLog& gnss) {
-    const size_t own = log.gnss.size();
+    const size_t own = log.records.gnss;
     char before_imu[200] = "";
-    if (!log.imu.empty()) {
-        const int64_t t0_ns = log.imu.front().header.t_ns;
+    if (log.records.imu > 0) {
+        const int64_t t0_ns = log.records.imu_first_t_ns;
         size_t before = 0;
         for (const auto& g : gnss.gnss) before += g.header.t_ns < t0_ns ? 1 : 0;
         if (before > 0)
@@ -141,6 +141,7 @@ void use_gnss(SensorLog& log, const SensorLog& gnss) {
                           before, static_cast<double>(t0_ns) * 1e-9);
     }
     log.gnss = gnss.gnss;
+    log.records.gnss = gnss.gnss.size();
     for (auto it = log.streams.begin(); it != log.streams.end();) {
         it = it->name == "gnss" ? log.streams.erase(it) : it + 1;
     }

@@ -42,46 +42,122 @@ std::string sibling(const std::string& path, const std::string& from, const std:
     return dir_name(path) + "/" + name;
 }
 
-void read_stream(const TextFile& file, bool accel, LogBuilder& builder) {
-    const size_t header = header_index(file);
-    if (header == std::string::npos)
-        throw ReadError(file.path, 0, "no 'elapsed-time-system ...' header line");
-    const std::string name = base_name(file.path);
-    const unsigned bits = stream_bit(accel ? stream_accel : stream_gyro);
-    builder.set_context(name);
-    Clock clock(name);
-    std::vector<std::string_view> fields;
-    const char* columns[5] = {"elapsed-time-system", "elapsed-time-sensor", "x", "y", "z"};
-    for (size_t index = header + 1; index < file.lines.size(); ++index) {
-        const size_t line_no = index + 1;
-        const std::string_view line = trim(file.lines[index]);
-        if (line.empty()) continue;
-        split_into(line, ' ', fields);
-        if (fields.size() != 5) {
-            builder.bad_row(line_no, fields.size() < 5 ? "truncated row" : "too many fields", bits);
-            continue;
+// One of the two files, read a line at a time.
+struct Source {
+    Source(InputFile& file, bool is_accel)
+        : input(file), accel(is_accel), name(base_name(file.path())), clock(name),
+          lines(file, header_or_throw(file) + 1) {}
+    static size_t header_or_throw(const InputFile& file) {
+        const size_t header = header_index(file.head());
+        if (header == std::string::npos) throw ReadError(file.path(), 0, "no 'elapsed-time-system ...' header line");
+        return header;
+    }
+    InputFile& input;
+    bool accel;
+    std::string name;
+    Clock clock;
+    LineCursor lines;
+    bool ended = false;
+};
+
+// The two files side by side: the accelerometer's read on while its samples
+// can be paired, the gyroscope's when the next one is needed. Each file's
+// issues are listed together (issue channel 0 and 1), as when they were read
+// one after the other.
+class HumolireReader : public RowReader {
+public:
+    HumolireReader(InputFile& given, std::unique_ptr<InputFile> other, bool given_accel, LogBuilder& builder,
+                   SensorLog& log)
+        : other_(std::move(other)),
+          accel_(given_accel ? given : *other_, true),
+          gyro_(given_accel ? *other_ : given, false),
+          builder_(builder),
+          log_(log) {}
+
+    bool read_lines(size_t lines) override {
+        for (size_t n = 0; n < lines; ++n) {
+            Source* next = nullptr;
+            if (!accel_.ended && (!builder_.pairing_waits() || gyro_.ended))
+                next = &accel_;
+            else if (!gyro_.ended)
+                next = &gyro_;
+            else if (!accel_.ended)
+                next = &accel_;
+            if (next == nullptr) return end();
+            read_line(*next);
         }
+        return true;
+    }
+    uint64_t record_types() const override { return PN_REC_MASK(PN_REC_IMU); }
+    uint64_t bytes_read() const override {
+        return accel_.input.rest().bytes_read() + gyro_.input.rest().bytes_read();
+    }
+    uint64_t bytes_total() const override {
+        return accel_.input.rest().size_bytes() + gyro_.input.rest().size_bytes();
+    }
+
+private:
+    void read_line(Source& src) {
+        builder_.set_context(src.name);
+        builder_.set_channel(src.accel ? 0 : 1);
+        std::string_view raw;
+        size_t line_no = 0;
+        if (!src.lines.next(&raw, &line_no)) {
+            src.ended = true;
+            builder_.end_of(src.accel ? stream_accel : stream_gyro);
+        } else {
+            read_row(src, raw, line_no);
+        }
+        builder_.set_context("");
+        builder_.set_channel(0);
+    }
+
+    void read_row(Source& src, std::string_view raw, size_t line_no) {
+        const unsigned bits = stream_bit(src.accel ? stream_accel : stream_gyro);
+        const std::string_view line = trim(raw);
+        if (line.empty()) return;
+        split_into(line, ' ', fields_);
+        if (fields_.size() != 5) {
+            builder_.bad_row(line_no, fields_.size() < 5 ? "truncated row" : "too many fields", bits);
+            return;
+        }
+        static const char* const columns[5] = {"elapsed-time-system", "elapsed-time-sensor", "x", "y", "z"};
         double v[5];
-        bool ok = true;
-        for (int k = 0; k < 5 && ok; ++k) {
-            const NumberStatus status = parse_number(fields[static_cast<size_t>(k)], &v[k]);
+        for (int k = 0; k < 5; ++k) {
+            const NumberStatus status = parse_number(fields_[static_cast<size_t>(k)], &v[k]);
             if (status != NumberStatus::ok) {
-                builder.bad_row(
-                    line_no, describe_bad_number(status, fields[static_cast<size_t>(k)], columns[k]), bits);
-                ok = false;
+                builder_.bad_row(line_no, describe_bad_number(status, fields_[static_cast<size_t>(k)], columns[k]),
+                                 bits);
+                return;
             }
         }
-        if (!ok || !builder.accept_time(clock, line_no, v[1], bits)) continue;
+        if (!builder_.accept_time(src.clock, line_no, v[1], bits)) return;
         double body[3];
         android_to_flu(&v[2], body);
-        if (accel) {
-            builder.add_accel(line_no, v[1], body);
+        if (src.accel) {
+            builder_.add_accel(line_no, v[1], body);
         } else {
-            builder.add_gyro(line_no, v[1], body);
+            builder_.add_gyro(line_no, v[1], body);
         }
     }
-    builder.set_context("");
-}
+
+    bool end() {
+        if (!ended_) {
+            ended_ = true;
+            log_.axes = kAndroidAxesText;
+            builder_.note("two files: " + accel_.input.path() + " and " + gyro_.input.path() +
+                          "; time from elapsed-time-sensor");
+        }
+        return false;
+    }
+
+    std::unique_ptr<InputFile> other_;
+    Source accel_, gyro_;
+    LogBuilder& builder_;
+    SensorLog& log_;
+    std::vector<std::string_view> fields_;
+    bool ended_ = false;
+};
 
 }  // namespace
 
@@ -91,7 +167,9 @@ bool detect_humolire(const TextFile& file) {
     return starts_with(first, "accelerometer") || starts_with(first, "gyroscope");
 }
 
-void read_humolire(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> open_humolire(InputFile& input, const ReadOptions&, LogBuilder& builder,
+                                         SensorLog& log) {
+    const TextFile& file = input.head();
     const std::string first = to_lower(trim(file.lines[0]));
     const bool given_accel = starts_with(first, "accelerometer");
     const std::string other_path = given_accel ? sibling(file.path, "accelerometer", "gyroscope")
@@ -101,17 +179,17 @@ void read_humolire(const TextFile& file, const ReadOptions&, LogBuilder& builder
                         "two-file recording: cannot derive the name of the other file (expected the words "
                         "'accelerometer' and 'gyroscope' in the file names)");
     }
-    TextFile other;
+    std::unique_ptr<InputFile> other;
     try {
-        other = load_text_file(other_path);
+        other = std::make_unique<InputFile>(other_path);
     } catch (const ReadError& e) {
         throw ReadError(file.path, 0,
                         std::string("two-file recording: the ") +
                             (given_accel ? "gyroscope" : "accelerometer") + " file " + other_path + ": " +
                             e.reason());
     }
-    const TextFile& accel_file = given_accel ? file : other;
-    const TextFile& gyro_file = given_accel ? other : file;
+    const TextFile& accel_file = given_accel ? file : other->head();
+    const TextFile& gyro_file = given_accel ? other->head() : file;
     // The unit sentence of each file (line 3) must say what the engine assumes.
     const std::string accel_units = accel_file.lines.size() > 2 ? std::string(trim(accel_file.lines[2])) : "";
     const std::string gyro_units = gyro_file.lines.size() > 2 ? std::string(trim(gyro_file.lines[2])) : "";
@@ -126,11 +204,7 @@ void read_humolire(const TextFile& file, const ReadOptions&, LogBuilder& builder
     }
     builder.set_units(stream_accel, "m/s^2", "m/s^2");
     builder.set_units(stream_gyro, "rad/s", "rad/s");
-    read_stream(accel_file, true, builder);
-    read_stream(gyro_file, false, builder);
-    log.axes = kAndroidAxesText;
-    builder.note("two files: " + accel_file.path + " and " + gyro_file.path +
-                 "; time from elapsed-time-sensor");
+    return std::make_unique<HumolireReader>(input, std::move(other), given_accel, builder, log);
 }
 
 }  // namespace pednav::io::detail

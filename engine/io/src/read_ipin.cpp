@@ -65,6 +65,8 @@ bool detect_ipin(const TextFile& file) {
     return false;
 }
 
+namespace {
+
 void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
     std::map<std::string, std::vector<RawLine>> streams;  // ACCE, GYRO, MAGN, PRES, GNSS
     std::map<std::string, size_t> ignored;
@@ -240,6 +242,13 @@ void read_ipin(const TextFile& file, const ReadOptions&, LogBuilder& builder, Se
         builder.note("lines ignored: " + list);
     }
     log.axes = kAndroidAxesText;
+}
+
+}  // namespace
+
+std::unique_ptr<RowReader> open_ipin(InputFile& input, const ReadOptions& options, LogBuilder& builder,
+                                     SensorLog& log) {
+    return open_whole_file(input, options, builder, log, read_ipin);
 }
 
 }  // namespace pednav::io::detail

@@ -41,7 +41,9 @@ bool has_channel(const TextFile& file, const char* channel) {
 bool detect_microstrain_a(const TextFile& file) { return has_channel(file, "scaledAccelX"); }
 bool detect_microstrain_b(const TextFile& file) { return has_channel(file, "estCompensatedAccelX"); }
 
-void read_microstrain(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> open_microstrain(InputFile& input, const ReadOptions&, LogBuilder& builder,
+                                            SensorLog& log) {
+    const TextFile& file = input.head();
     const size_t index = header_line_index(file, "microstrain-sensorconnect");
     const Header h = header_of(file, index);
     TableSpec spec;
@@ -98,7 +100,7 @@ void read_microstrain(const TextFile& file, const ReadOptions&, LogBuilder& buil
     builder.note(std::string("MicroStrain SensorConnect layout ") + (layout_a ? "A" : "B") + ": " + accel +
                  " in " + (layout_a ? "g" : "m/s^2") + ", " + gyro + " in rad/s" +
                  (spec.valid_cols.empty() ? "" : ", rows with a ':valid' flag of 0 skipped"));
-    read_table(file, spec, builder);
+    return std::make_unique<TableReader>(input, spec, builder);
 }
 
 }  // namespace pednav::io::detail

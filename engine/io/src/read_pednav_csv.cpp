@@ -30,7 +30,9 @@ bool detect_pednav_csv(const TextFile& file) {
     return false;
 }
 
-void read_pednav_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> open_pednav_csv(InputFile& input, const ReadOptions&, LogBuilder& builder,
+                                           SensorLog& log) {
+    const TextFile& file = input.head();
     const size_t index = header_line_index(file, "pednav-csv");
     TableSpec spec;
     spec.delim = ',';
@@ -65,7 +67,7 @@ void read_pednav_csv(const TextFile& file, const ReadOptions&, LogBuilder& build
     std::string cols;
     for (const auto& n : spec.names) cols += (cols.empty() ? "" : ",") + n;
     builder.note("columns: " + cols);
-    read_table(file, spec, builder);
+    return std::make_unique<TableReader>(input, spec, builder);
 }
 
 }  // namespace pednav::io::detail

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Format detection and dispatch, merged_records, and the small public helpers.
+// Format detection and choice, merged_records, and the small public helpers.
 #include <dirent.h>
 #include <sys/stat.h>
 #include <algorithm>
@@ -54,9 +54,9 @@ const detail::FormatReader* find_reader(const std::string& name) {
     return nullptr;
 }
 
-const detail::FormatReader* detect(const detail::TextFile& file) {
+const detail::FormatReader* detect(const detail::TextFile& head) {
     for (const auto& r : detail::format_readers()) {
-        if (r.detect != nullptr && r.detect(file)) return &r;
+        if (r.detect != nullptr && r.detect(head)) return &r;
     }
     return nullptr;
 }
@@ -98,26 +98,26 @@ const std::vector<FormatReader>& format_readers() {
     // Detection order: the most specific header first.
     static const std::vector<FormatReader> readers = {
         {"ipin-logfile", "IPIN competition logfile (ACCE;GYRO;MAGN;PRES;GNSS;POSI lines)", detect_ipin,
-         read_ipin},
+         open_ipin},
         {"humolire-senslogs", "senslogs two-file Android log (accelerometer/gyroscope .txt)", detect_humolire,
-         read_humolire},
+         open_humolire},
         {"microstrain-sensorconnect-a", "MicroStrain SensorConnect CSV, scaled* channels (g, rad/s, gauss)",
-         detect_microstrain_a, read_microstrain},
+         detect_microstrain_a, open_microstrain},
         {"microstrain-sensorconnect-b",
          "MicroStrain SensorConnect CSV, estCompensated* channels (m/s^2, rad/s)", detect_microstrain_b,
-         read_microstrain},
-        {"xio-ngimu-csv", "x-io NGIMU / x-IMU CSV (\"Time (s)\", deg/s, g)", detect_xio_csv, read_xio_csv},
+         open_microstrain},
+        {"xio-ngimu-csv", "x-io NGIMU / x-IMU CSV (\"Time (s)\", deg/s, g)", detect_xio_csv, open_xio_csv},
         {"xsens-mtw-tsv", "Xsens tab-separated export (PacketCounter, Acc_X, ...)", detect_xsens_mtw_tsv,
-         read_xsens},
+         open_xsens},
         {"xsens-mtmanager-csv", "Xsens MT Manager CSV export (PacketCounter, SampleTimeFine, Acc_X, ...)",
-         detect_xsens_mtmanager_csv, read_xsens},
+         detect_xsens_mtmanager_csv, open_xsens},
         {"xsens-converted-g-csv",
          "Xsens export converted to time,gx..,ax.. in g, p in hPa (biba mapmatching_run)",
-         detect_biba_converted_csv, read_biba_converted_csv},
+         detect_biba_converted_csv, open_biba_converted_csv},
         {"pednav-csv", "canonical CSV t,ax,ay,az,gx,gy,gz[,mx,my,mz][,p] in s, m/s^2, rad/s, uT, Pa",
-         detect_pednav_csv, read_pednav_csv},
+         detect_pednav_csv, open_pednav_csv},
         {"column-map", "any delimited file described by a column map (ReadOptions::column_map)", nullptr,
-         read_column_map},
+         open_column_map},
     };
     return readers;
 }
@@ -130,34 +130,25 @@ std::vector<std::string> supported_formats() {
     return names;
 }
 
-namespace {
+namespace detail {
 
-std::string resolve_path(const std::string& path) { return is_directory(path) ? resolve_folder(path) : path; }
-
-}  // namespace
-
-std::string detect_format(const std::string& path) {
-    const detail::TextFile file = detail::load_text_file(resolve_path(path));
-    const detail::FormatReader* reader = detect(file);
-    if (reader == nullptr) throw ReadError(path, 0, "unknown format");
-    return reader->name;
+std::string resolve_recording_path(const std::string& path) {
+    return is_directory(path) ? resolve_folder(path) : path;
 }
 
-SensorLog read_sensor_file(const std::string& path, const ReadOptions& options) {
-    const std::string file_path = resolve_path(path);
-    const detail::TextFile file = detail::load_text_file(file_path);
-    const detail::FormatReader* reader = nullptr;
+const FormatReader& choose_reader(const std::string& path, const TextFile& head, const ReadOptions& options) {
+    const FormatReader* reader = nullptr;
     if (options.format.empty() || options.format == "auto") {
         if (options.column_map != nullptr) {
             reader = find_reader("column-map");
         } else {
-            reader = detect(file);
+            reader = detect(head);
             if (reader == nullptr) {
-                const size_t first = detail::first_content_line(file);
-                const std::string head =
-                    first < file.lines.size() ? std::string(file.lines[first].substr(0, 80)) : std::string();
+                const size_t first = first_content_line(head);
+                const std::string text =
+                    first < head.lines.size() ? std::string(head.lines[first].substr(0, 80)) : std::string();
                 throw ReadError(path, first + 1,
-                                "unknown format (first line '" + head +
+                                "unknown format (first line '" + text +
                                     "'); name it with --format or describe it with a column map");
             }
         }
@@ -165,16 +156,16 @@ SensorLog read_sensor_file(const std::string& path, const ReadOptions& options) 
         reader = find_reader(options.format);
         if (reader == nullptr) throw ReadError(path, 0, "unknown format name '" + options.format + "'");
     }
-    SensorLog log;
-    log.format = reader->name;
-    log.path = path;
-    detail::LogBuilder builder(log, options);
-    builder.note(std::string("format: ") + reader->name + " (" + reader->description + ")" +
-                 (options.format == "auto" || options.format.empty() ? ", detected" : ", as requested"));
-    reader->read(file, options, builder, log);
-    builder.finish();
-    if (!log.axes.empty()) log.notes.push_back("body axes: " + log.axes);
-    return log;
+    return *reader;
+}
+
+}  // namespace detail
+
+std::string detect_format(const std::string& path) {
+    detail::InputFile input(detail::resolve_recording_path(path));
+    const detail::FormatReader* reader = detect(input.head());
+    if (reader == nullptr) throw ReadError(path, 0, "unknown format");
+    return reader->name;
 }
 
 std::vector<const pn_record_header_t*> merged_records(const SensorLog& log) {

@@ -52,7 +52,8 @@ bool detect_xio_csv(const TextFile& file) {
     return index_of(cols, "gyroscope x") >= 0 && index_of(cols, "accelerometer x") >= 0;
 }
 
-void read_xio_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> open_xio_csv(InputFile& input, const ReadOptions&, LogBuilder& builder, SensorLog& log) {
+    const TextFile& file = input.head();
     const size_t index = header_line_index(file, "xio-ngimu-csv");
     const auto cols = columns_of(file, index);
     TableSpec spec;
@@ -121,7 +122,7 @@ void read_xio_csv(const TextFile& file, const ReadOptions&, LogBuilder& builder,
     }
     log.axes = "sensor x, y, z as printed on the x-io case (right-handed), not levelled";
     builder.note("x-io CSV: accelerometer in " + a_unit + ", gyroscope in " + g_unit + ", time in s");
-    read_table(file, spec, builder);
+    return std::make_unique<TableReader>(input, spec, builder);
 }
 
 }  // namespace pednav::io::detail

@@ -67,7 +67,9 @@ bool detect_xsens_mtmanager_csv(const TextFile& file) {
     return find_header(file, &h) && h.delim != '\t';
 }
 
-void read_xsens(const TextFile& file, const ReadOptions& options, LogBuilder& builder, SensorLog& log) {
+std::unique_ptr<RowReader> open_xsens(InputFile& input, const ReadOptions& options, LogBuilder& builder,
+                                      SensorLog& log) {
+    const TextFile& file = input.head();
     XsensHeader h;
     if (!find_header(file, &h))
         throw ReadError(file.path, 0, "no Xsens header (PacketCounter, Acc_X, ...) found");
@@ -130,7 +132,7 @@ void read_xsens(const TextFile& file, const ReadOptions& options, LogBuilder& bu
     if (spec.pressure_col >= 0) builder.set_units(stream_pressure, "Pa", "Pa");
     spec.temperature_col = find_column(h.names, "Temperature");
     log.axes = "Xsens sensor frame x, y, z (right-handed, as on the case), not levelled";
-    read_table(file, spec, builder);
+    return std::make_unique<TableReader>(input, spec, builder);
 }
 
 }  // namespace pednav::io::detail

@@ -35,10 +35,10 @@ nlohmann::json sensor_log_json(const SensorLog& log) {
               {"format", log.format},
               {"axes", log.axes},
               {"records",
-               {{"imu", log.imu.size()},
-                {"mag", log.mag.size()},
-                {"baro", log.baro.size()},
-                {"gnss", log.gnss.size()},
+               {{"imu", log.records.imu},
+                {"mag", log.records.mag},
+                {"baro", log.records.baro},
+                {"gnss", log.records.gnss},
                 {"truth", log.truth.size()}}},
               {"streams", streams},
               {"truth_origin", truth_origin},
@@ -59,26 +59,43 @@ double track_length_m(const std::vector<pn_position_t>& positions) {
     return length_m;
 }
 
+void RunTotals::add(const pn_position_t& p) {
+    if (positions++ == 0) {
+        first = p;
+    } else {
+        distance_m += std::hypot(p.pos_enu_m[0] - last.pos_enu_m[0], p.pos_enu_m[1] - last.pos_enu_m[1]);
+    }
+    last = p;
+    if (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) floors.insert(p.floor);
+}
+
+void RunTotals::add(const pn_stride_t& s) {
+    ++strides;
+    stride_length_sum_m += s.length_m;
+}
+
 nlohmann::json run_summary_json(const SensorLog& input, const std::string& describe_json,
                                 const std::vector<pn_position_t>& positions,
                                 const std::vector<pn_stride_t>& strides,
+                                const std::vector<std::string>& warnings) {
+    RunTotals totals;
+    for (const auto& p : positions) totals.add(p);
+    for (const auto& s : strides) totals.add(s);
+    return run_summary_json(input, describe_json, totals, warnings);
+}
+
+nlohmann::json run_summary_json(const SensorLog& input, const std::string& describe_json, const RunTotals& totals,
                                 const std::vector<std::string>& warnings) {
     using nlohmann::json;
     json describe = describe_json.empty() ? json(nullptr) : json::parse(describe_json, nullptr, false);
     if (describe.is_discarded()) describe = json(describe_json);
 
-    double stride_distance_m = 0.0;
-    for (const auto& s : strides) stride_distance_m += s.length_m;
-    std::set<int> floors;
-    for (const auto& p : positions) {
-        if (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) floors.insert(p.floor);
-    }
     json final_position = nullptr;
     double duration_s = 0.0;
-    if (!positions.empty()) {
-        const auto& last = positions.back();
+    if (totals.positions > 0) {
+        const auto& last = totals.last;
         final_position = {last.pos_enu_m[0], last.pos_enu_m[1], last.pos_enu_m[2]};
-        duration_s = static_cast<double>(last.header.t_ns - positions.front().header.t_ns) * 1e-9;
+        duration_s = static_cast<double>(last.header.t_ns - totals.first.header.t_ns) * 1e-9;
     }
     json summary = {
         {"format", "pednav-run-summary/1"},
@@ -86,17 +103,17 @@ nlohmann::json run_summary_json(const SensorLog& input, const std::string& descr
         {"engine", describe.is_object() && describe.contains("engine") ? describe["engine"] : json(nullptr)},
         {"pipeline", describe.is_object() && describe.contains("pipeline") ? describe["pipeline"] : describe},
         {"samples",
-         {{"imu", input.imu.size()},
-          {"mag", input.mag.size()},
-          {"baro", input.baro.size()},
-          {"gnss", input.gnss.size()}}},
-        {"positions", positions.size()},
-        {"steps", strides.size()},
-        {"distance_m", track_length_m(positions)},
-        {"stride_length_sum_m", stride_distance_m},
+         {{"imu", input.records.imu},
+          {"mag", input.records.mag},
+          {"baro", input.records.baro},
+          {"gnss", input.records.gnss}}},
+        {"positions", totals.positions},
+        {"steps", totals.strides},
+        {"distance_m", totals.distance_m},
+        {"stride_length_sum_m", totals.stride_length_sum_m},
         {"duration_s", duration_s},
         {"final_position_enu_m", final_position},
-        {"floors", floors},
+        {"floors", totals.floors},
         {"warnings", warnings},
     };
     if (describe.is_object() && describe.contains("counters")) summary["counters"] = describe["counters"];

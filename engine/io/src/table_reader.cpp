@@ -79,18 +79,17 @@ namespace {
 
 // Every column the spec reads lies within the header: a reader forced onto a
 // file it does not fit must fail here rather than index fields[-1].
-void check_columns(const TextFile& file, const TableSpec& spec) {
+void check_columns(const std::string& path, const TableSpec& spec) {
     const size_t header_line = spec.first_data_index;  // 1-based number of the header line
-    if (spec.time_col < 0) throw ReadError(file.path, header_line, "no time column in the header");
+    if (spec.time_col < 0) throw ReadError(path, header_line, "no time column in the header");
     std::vector<int> cols = {spec.time_col, spec.pressure_col, spec.temperature_col};
     for (const Vec3Spec* v : {&spec.accel, &spec.gyro, &spec.mag})
         cols.insert(cols.end(), v->col, v->col + 3);
     cols.insert(cols.end(), spec.valid_cols.begin(), spec.valid_cols.end());
     for (int c : cols) {
         if (c >= static_cast<int>(spec.column_count) || c >= static_cast<int>(spec.names.size()))
-            throw ReadError(file.path, header_line, "the header has " + std::to_string(spec.column_count) +
-                                                        " columns, the format needs column " +
-                                                        std::to_string(c + 1));
+            throw ReadError(path, header_line, "the header has " + std::to_string(spec.column_count) +
+                                                   " columns, the format needs column " + std::to_string(c + 1));
     }
 }
 
@@ -107,154 +106,171 @@ double epoch_scale(double first_time, const char** unit) {
 
 }  // namespace
 
-void read_table(const TextFile& file, const TableSpec& given_spec, LogBuilder& builder) {
-    TableSpec spec = given_spec;  // time_scale may be settled by the first time
-    bool time_scale_settled = !spec.time_unit_from_magnitude;
-    check_columns(file, spec);
-    unsigned present = 0;
-    if (spec.accel.present()) present |= kImuBits;
-    if (spec.mag.present()) present |= stream_bit(stream_mag);
-    if (spec.pressure_col >= 0) present |= stream_bit(stream_pressure);
+TableReader::TableReader(InputFile& input, const TableSpec& spec, LogBuilder& builder)
+    : input_(input), lines_(input, spec.first_data_index), spec_(spec), builder_(builder),
+      time_scale_settled_(!spec.time_unit_from_magnitude) {
+    check_columns(input.path(), spec_);
+    if (spec_.accel.present()) present_ |= kImuBits;
+    if (spec_.mag.present()) present_ |= stream_bit(stream_mag);
+    if (spec_.pressure_col >= 0) present_ |= stream_bit(stream_pressure);
+    if (spec_.accel.present() && spec_.gyro.present()) {
+        for (int i = 0; i < 3; ++i)
+            checks_.emplace_back(spec_.names[static_cast<size_t>(spec_.accel.col[i])], "m/s^2", 1000.0,
+                                 2.0 * kStandardGravity);
+        for (int i = 0; i < 3; ++i)
+            checks_.emplace_back(spec_.names[static_cast<size_t>(spec_.gyro.col[i])], "rad/s", 50.0, 2.0);
+    }
+    last_line_ = spec_.first_data_index;
+}
 
-    Clock clock(""), imu_clock("accel/gyro"), mag_clock("mag"), pressure_clock("pressure");
-    std::vector<std::string_view> fields;
-    // Plausibility per inertial column: accelerometer beyond 1000 m/s^2 (100 g)
-    // or flat above 2 g, gyroscope beyond 50 rad/s (2 900 deg/s) or flat above 2 rad/s.
-    std::vector<ColumnCheck> checks;
+uint64_t TableReader::record_types() const {
+    uint64_t types = 0;
+    if (present_ & kImuBits) types |= PN_REC_MASK(PN_REC_IMU);
+    if (present_ & stream_bit(stream_mag)) types |= PN_REC_MASK(PN_REC_MAG);
+    if (present_ & stream_bit(stream_pressure)) types |= PN_REC_MASK(PN_REC_BARO);
+    return types;
+}
+
+bool TableReader::read_lines(size_t lines) {
+    if (ended_) return false;
+    std::string_view line;
+    size_t line_no = 0;
+    for (size_t n = 0; n < lines; ++n) {
+        if (!lines_.next(&line, &line_no)) {
+            end();
+            return false;
+        }
+        last_line_ = line_no;
+        read_row(line, line_no, lines_.line_cut());
+    }
+    return true;
+}
+
+void TableReader::end() {
+    ended_ = true;
+    for (const auto& c : checks_) c.report(builder_);
+    if (truncated_line_ > 0 && truncated_line_ == last_line_)
+        builder_.note("the last line is incomplete (file cut off while writing?)");
+}
+
+void TableReader::read_row(std::string_view raw, size_t line_no, bool cut) {
+    const TableSpec& spec = spec_;
+    const std::string_view line = trim(raw);
+    if (line.empty() || is_comment(spec, line)) return;
+    if (cut) {
+        builder_.bad_row(line_no,
+                         "line longer than " + std::to_string(LineReader::kMaxLineBytes >> 20) + " MiB",
+                         present_);
+        return;
+    }
+    // Split the untrimmed line: the trailing empty cell of a tab-separated
+    // row is a field (split_into trims each field). One delimiter more
+    // than the header has, ending the row, closes it instead: headers
+    // are read trimmed, so a trailing tab never makes a column there.
+    std::vector<std::string_view>& fields = fields_;
+    split_into(raw, spec.delim, fields);
+    if (fields.size() == spec.column_count + 1 && fields.back().empty()) fields.pop_back();
+    if (fields.size() != spec.column_count) {
+        char text[160];
+        std::snprintf(text, sizeof text, "%s: %zu fields, the header has %zu",
+                      fields.size() < spec.column_count ? "truncated row" : "too many fields", fields.size(),
+                      spec.column_count);
+        builder_.bad_row(line_no, text, present_);
+        truncated_line_ = line_no;
+        return;
+    }
+    RowContext ctx{spec, fields, {}};
+
+    double raw_time = 0.0;
+    if (parse_scalar(ctx, spec.time_col, &raw_time) != CellResult::ok) {
+        builder_.bad_row(line_no, ctx.error.empty() ? "no time" : ctx.error, present_);
+        return;
+    }
+    if (!time_scale_settled_) {
+        time_scale_settled_ = true;
+        const char* unit = "";
+        spec_.time_scale = epoch_scale(raw_time, &unit);
+        if (spec.time_scale != 1.0) {
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "time column %s: the first value %.6g (line %zu) is a Unix time in %s, not "
+                          "seconds: read as %s",
+                          spec.names[static_cast<size_t>(spec.time_col)].c_str(), raw_time, line_no, unit, unit);
+            builder_.issue(line_no, text);
+        }
+    }
+    for (int c : spec.valid_cols) {
+        double flag = 0.0;
+        if (parse_number(fields[static_cast<size_t>(c)], &flag) != NumberStatus::ok || flag != 1.0) {
+            builder_.bad_row(line_no,
+                             "sample flagged invalid by the sensor (" + spec.names[static_cast<size_t>(c)] + ")",
+                             present_);
+            return;
+        }
+    }
+
+    double a[3] = {0, 0, 0}, g[3] = {0, 0, 0}, m[3] = {0, 0, 0}, p = 0.0, temp = NAN;
     double cells[6] = {0, 0, 0, 0, 0, 0};
-    if (spec.accel.present() && spec.gyro.present()) {
-        for (int i = 0; i < 3; ++i)
-            checks.emplace_back(spec.names[static_cast<size_t>(spec.accel.col[i])], "m/s^2", 1000.0,
-                                2.0 * kStandardGravity);
-        for (int i = 0; i < 3; ++i)
-            checks.emplace_back(spec.names[static_cast<size_t>(spec.gyro.col[i])], "rad/s", 50.0, 2.0);
+    bool has_imu = false, has_mag = false, has_p = false;
+    if (spec.accel.present()) {
+        const CellResult ra = parse_vec(ctx, spec.accel, a, false, cells);
+        const CellResult rg =
+            ra == CellResult::bad ? CellResult::bad : parse_vec(ctx, spec.gyro, g, false, cells + 3);
+        if (ra == CellResult::bad || rg == CellResult::bad) {
+            builder_.bad_row(line_no, ctx.error, present_);
+            return;
+        }
+        if (ra != rg) {
+            builder_.bad_row(line_no, "accelerometer and gyroscope cells must be both present or both empty",
+                             present_);
+            return;
+        }
+        has_imu = ra == CellResult::ok;
     }
-    double last_raw_time = 0.0, wrap_offset = 0.0;
-    bool have_raw_time = false;
-    size_t truncated_last_line = 0;
-
-    for (size_t index = spec.first_data_index; index < file.lines.size(); ++index) {
-        const size_t line_no = index + 1;
-        const std::string_view line = trim(file.lines[index]);
-        if (line.empty() || is_comment(spec, line)) continue;
-        // Split the untrimmed line: the trailing empty cell of a tab-separated
-        // row is a field (split_into trims each field). One delimiter more
-        // than the header has, ending the row, closes it instead: headers
-        // are read trimmed, so a trailing tab never makes a column there.
-        split_into(file.lines[index], spec.delim, fields);
-        if (fields.size() == spec.column_count + 1 && fields.back().empty()) fields.pop_back();
-        if (fields.size() != spec.column_count) {
-            char text[160];
-            std::snprintf(text, sizeof text, "%s: %zu fields, the header has %zu",
-                          fields.size() < spec.column_count ? "truncated row" : "too many fields",
-                          fields.size(), spec.column_count);
-            builder.bad_row(line_no, text, present);
-            if (index + 1 == file.lines.size()) truncated_last_line = line_no;
-            continue;
-        }
-        RowContext ctx{spec, fields, {}};
-
-        double raw_time = 0.0;
-        if (parse_scalar(ctx, spec.time_col, &raw_time) != CellResult::ok) {
-            builder.bad_row(line_no, ctx.error.empty() ? "no time" : ctx.error, present);
-            continue;
-        }
-        if (!time_scale_settled) {
-            time_scale_settled = true;
-            const char* unit = "";
-            spec.time_scale = epoch_scale(raw_time, &unit);
-            if (spec.time_scale != 1.0) {
-                char text[200];
-                std::snprintf(text, sizeof text,
-                              "time column %s: the first value %.6g (line %zu) is a Unix time in %s, not "
-                              "seconds: read as %s",
-                              spec.names[static_cast<size_t>(spec.time_col)].c_str(), raw_time, line_no, unit,
-                              unit);
-                builder.issue(line_no, text);
-            }
-        }
-        bool invalid = false;
-        for (int c : spec.valid_cols) {
-            double flag = 0.0;
-            if (parse_number(fields[static_cast<size_t>(c)], &flag) != NumberStatus::ok || flag != 1.0) {
-                builder.bad_row(
-                    line_no,
-                    "sample flagged invalid by the sensor (" + spec.names[static_cast<size_t>(c)] + ")",
-                    present);
-                invalid = true;
-                break;
-            }
-        }
-        if (invalid) continue;
-
-        double a[3] = {0, 0, 0}, g[3] = {0, 0, 0}, m[3] = {0, 0, 0}, p = 0.0, temp = NAN;
-        bool has_imu = false, has_mag = false, has_p = false;
-        if (spec.accel.present()) {
-            const CellResult ra = parse_vec(ctx, spec.accel, a, false, cells);
-            const CellResult rg =
-                ra == CellResult::bad ? CellResult::bad : parse_vec(ctx, spec.gyro, g, false, cells + 3);
-            if (ra == CellResult::bad || rg == CellResult::bad) {
-                builder.bad_row(line_no, ctx.error, present);
-                continue;
-            }
-            if (ra != rg) {
-                builder.bad_row(
-                    line_no, "accelerometer and gyroscope cells must be both present or both empty", present);
-                continue;
-            }
-            has_imu = ra == CellResult::ok;
-        }
-        if (spec.mag.present()) {
-            const CellResult rm = parse_vec(ctx, spec.mag, m, true);
-            if (rm == CellResult::bad) {
-                builder.bad_row(line_no, "magnetometer sample: " + ctx.error, stream_bit(stream_mag));
-            }
-            has_mag = rm == CellResult::ok;
-        }
-        if (spec.pressure_col >= 0) {
-            const CellResult rp = parse_scalar(ctx, spec.pressure_col, &p, true);
-            if (rp == CellResult::bad)
-                builder.bad_row(line_no, "pressure sample: " + ctx.error, stream_bit(stream_pressure));
-            has_p = rp == CellResult::ok;
-            p *= spec.pressure_scale;
-            if (has_p && spec.temperature_col >= 0) {
-                double tc = 0.0;
-                if (parse_number(fields[static_cast<size_t>(spec.temperature_col)], &tc) == NumberStatus::ok)
-                    temp = tc;
-            }
-        }
-        if (!has_imu && !has_mag && !has_p) continue;
-
-        // Raw counters and tick clocks wrap; unwrap when the value drops by more than half the wrap.
-        if (spec.counter_wrap > 0 && have_raw_time &&
-            raw_time + wrap_offset < last_raw_time - spec.counter_wrap / 2) {
-            wrap_offset += spec.counter_wrap;
-        }
-        const double unwrapped = raw_time + wrap_offset;
-        const double t_s = spec.time_kind == TableSpec::TimeKind::counter ? unwrapped / spec.counter_rate_hz
-                                                                          : unwrapped * spec.time_scale;
-        if (spec.empty_cells_mean_absent) {
-            // Sparse multi-rate rows: each stream keeps its own time order.
-            if (has_imu) has_imu = builder.accept_time(imu_clock, line_no, t_s, kImuBits);
-            if (has_mag) has_mag = builder.accept_time(mag_clock, line_no, t_s, stream_bit(stream_mag));
-            if (has_p) has_p = builder.accept_time(pressure_clock, line_no, t_s, stream_bit(stream_pressure));
-            if (!has_imu && !has_mag && !has_p) continue;
-        } else {
-            const unsigned row_streams = (has_imu ? kImuBits : 0u) | (has_mag ? stream_bit(stream_mag) : 0u) |
-                                         (has_p ? stream_bit(stream_pressure) : 0u);
-            if (!builder.accept_time(clock, line_no, t_s, row_streams)) continue;
-        }
-        have_raw_time = true;
-        last_raw_time = unwrapped;
-        if (has_imu) {
-            builder.add_imu(line_no, t_s, a, g);
-            for (size_t i = 0; i < checks.size(); ++i) checks[i].add(cells[i], line_no);
-        }
-        if (has_mag) builder.add_mag(line_no, t_s, m);
-        if (has_p) builder.add_baro(line_no, t_s, p, temp);
+    if (spec.mag.present()) {
+        const CellResult rm = parse_vec(ctx, spec.mag, m, true);
+        if (rm == CellResult::bad) builder_.bad_row(line_no, "magnetometer sample: " + ctx.error, stream_bit(stream_mag));
+        has_mag = rm == CellResult::ok;
     }
-    for (const auto& c : checks) c.report(builder);
-    if (truncated_last_line > 0) builder.note("the last line is incomplete (file cut off while writing?)");
+    if (spec.pressure_col >= 0) {
+        const CellResult rp = parse_scalar(ctx, spec.pressure_col, &p, true);
+        if (rp == CellResult::bad)
+            builder_.bad_row(line_no, "pressure sample: " + ctx.error, stream_bit(stream_pressure));
+        has_p = rp == CellResult::ok;
+        p *= spec.pressure_scale;
+        if (has_p && spec.temperature_col >= 0) {
+            double tc = 0.0;
+            if (parse_number(fields[static_cast<size_t>(spec.temperature_col)], &tc) == NumberStatus::ok) temp = tc;
+        }
+    }
+    if (!has_imu && !has_mag && !has_p) return;
+
+    // Raw counters and tick clocks wrap; unwrap when the value drops by more than half the wrap.
+    if (spec.counter_wrap > 0 && have_raw_time_ && raw_time + wrap_offset_ < last_raw_time_ - spec.counter_wrap / 2) {
+        wrap_offset_ += spec.counter_wrap;
+    }
+    const double unwrapped = raw_time + wrap_offset_;
+    const double t_s = spec.time_kind == TableSpec::TimeKind::counter ? unwrapped / spec.counter_rate_hz
+                                                                      : unwrapped * spec.time_scale;
+    if (spec.empty_cells_mean_absent) {
+        // Sparse multi-rate rows: each stream keeps its own time order.
+        if (has_imu) has_imu = builder_.accept_time(imu_clock_, line_no, t_s, kImuBits);
+        if (has_mag) has_mag = builder_.accept_time(mag_clock_, line_no, t_s, stream_bit(stream_mag));
+        if (has_p) has_p = builder_.accept_time(pressure_clock_, line_no, t_s, stream_bit(stream_pressure));
+        if (!has_imu && !has_mag && !has_p) return;
+    } else {
+        const unsigned row_streams = (has_imu ? kImuBits : 0u) | (has_mag ? stream_bit(stream_mag) : 0u) |
+                                     (has_p ? stream_bit(stream_pressure) : 0u);
+        if (!builder_.accept_time(clock_, line_no, t_s, row_streams)) return;
+    }
+    have_raw_time_ = true;
+    last_raw_time_ = unwrapped;
+    if (has_imu) {
+        builder_.add_imu(line_no, t_s, a, g);
+        for (size_t i = 0; i < checks_.size(); ++i) checks_[i].add(cells[i], line_no);
+    }
+    if (has_mag) builder_.add_mag(line_no, t_s, m);
+    if (has_p) builder_.add_baro(line_no, t_s, p, temp);
 }
 
 }  // namespace pednav::io::detail

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // Internal: reads a delimited table whose columns map to streams, the shape of
 // most recordings (one header, one row per sample). A format reader fills a
-// TableSpec from the header it recognised; read_table does the rest.
+// TableSpec from the header it recognised; a TableReader reads the rows, a few
+// lines at a time.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "log_builder.hpp"
-#include "text_file.hpp"
+#include "column_checks.hpp"
+#include "formats.hpp"
 
 namespace pednav::io::detail {
 
@@ -24,7 +25,7 @@ struct Vec3Spec {
 
 struct TableSpec {
     char delim = ',';
-    size_t first_data_index = 1;     // 0-based index in TextFile::lines of the first data row
+    size_t first_data_index = 1;     // 0-based index of the first data row among the file's lines
     size_t column_count = 0;         // fields expected per row
     std::vector<std::string> names;  // column names, for messages
 
@@ -47,7 +48,36 @@ struct TableSpec {
     std::vector<std::string> comment_prefixes = {"#"};
 };
 
-void read_table(const TextFile& file, const TableSpec& spec, LogBuilder& builder);
+class TableReader : public RowReader {
+public:
+    // Throws ReadError when the spec reads a column the header does not have.
+    TableReader(InputFile& input, const TableSpec& spec, LogBuilder& builder);
+    bool read_lines(size_t lines) override;
+    uint64_t record_types() const override;
+    uint64_t bytes_read() const override { return input_.rest().bytes_read(); }
+    uint64_t bytes_total() const override { return input_.rest().size_bytes(); }
+
+private:
+    void read_row(std::string_view raw, size_t line_no, bool cut);
+    void end();
+
+    InputFile& input_;
+    LineCursor lines_;
+    TableSpec spec_;  // time_scale may be settled by the first time
+    LogBuilder& builder_;
+    bool time_scale_settled_;
+    unsigned present_ = 0;
+    Clock clock_{""}, imu_clock_{"accel/gyro"}, mag_clock_{"mag"}, pressure_clock_{"pressure"};
+    std::vector<std::string_view> fields_;
+    // Plausibility per inertial column: accelerometer beyond 1000 m/s^2 (100 g)
+    // or flat above 2 g, gyroscope beyond 50 rad/s (2 900 deg/s) or flat above 2 rad/s.
+    std::vector<ColumnCheck> checks_;
+    double last_raw_time_ = 0.0, wrap_offset_ = 0.0;
+    bool have_raw_time_ = false;
+    size_t last_line_ = 0;       // number of the last line of the file read so far
+    size_t truncated_line_ = 0;  // the last row with too few or too many fields
+    bool ended_ = false;
+};
 
 // Rotation matrices for the common remaps.
 void set_identity(double R[9]);

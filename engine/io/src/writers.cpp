@@ -1,66 +1,32 @@
 // SPDX-License-Identifier: Apache-2.0
-// Track and step CSVs, GeoJSON and GPX.
+// GeoJSON and GPX.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 
 #include "pednav_io/gnss_log.hpp"
 #include "pednav_io/writers.hpp"
+#include "writer_fields.hpp"
 
 namespace pednav::io {
 
 namespace {
 
-constexpr double kRadToDeg = 57.29577951308232;
+using detail::class_name;
+using detail::h_sigma_m;
+using detail::has_floor;
+using detail::heading_deg;
+using detail::kRadToDeg;
+using detail::OutFile;
+
 // GeoJSON and GPX keep at most one position per this interval (plus the last).
 constexpr int64_t kThinInterval_ns = 100000000;
 
-class OutFile {
-public:
-    explicit OutFile(const std::string& path) : path_(path), file_(std::fopen(path.c_str(), "w")) {
-        if (file_ == nullptr) throw std::runtime_error(path + ": cannot open for writing");
-    }
-    ~OutFile() {
-        if (file_ != nullptr) std::fclose(file_);
-    }
-    OutFile(const OutFile&) = delete;
-    OutFile& operator=(const OutFile&) = delete;
-    std::FILE* get() { return file_; }
-    void close() {
-        const bool failed = std::ferror(file_) != 0;
-        const int rc = std::fclose(file_);
-        file_ = nullptr;
-        if (failed || rc != 0) throw std::runtime_error(path_ + ": write failed");
-    }
-
-private:
-    std::string path_;
-    std::FILE* file_;
-};
-
-double heading_deg(double heading_rad) {
-    double d = std::fmod(heading_rad * kRadToDeg, 360.0);
-    if (d < 0) d += 360.0;
-    return d;
-}
-
-const char* class_name(int32_t c) {
-    switch (c) {
-        case PN_STRIDE_CLASS_LEVEL: return "level";
-        case PN_STRIDE_CLASS_STAIRS_UP: return "stairs_up";
-        case PN_STRIDE_CLASS_STAIRS_DOWN: return "stairs_down";
-        default: return "unknown";
-    }
-}
-
-bool has_floor(const pn_position_t& p) { return (p.header.flags & PN_POSITION_FLAG_HAS_FLOOR) != 0; }
-
 nlohmann::json floor_of(const pn_position_t& p) { return has_floor(p) ? nlohmann::json(p.floor) : nlohmann::json(); }
-
-double h_sigma_m(const pn_position_t& p) { return std::sqrt(std::max(0.0, p.cov_enu_m2[0] + p.cov_enu_m2[4])); }
 
 nlohmann::json point_feature(const nlohmann::json& coordinates, nlohmann::json properties) {
     return {{"type", "Feature"},
@@ -68,31 +34,43 @@ nlohmann::json point_feature(const nlohmann::json& coordinates, nlohmann::json p
             {"properties", std::move(properties)}};
 }
 
-std::vector<size_t> thinned(const std::vector<pn_position_t>& positions) {
-    std::vector<size_t> keep;
-    for (size_t i = 0; i < positions.size(); ++i) {
-        const bool floor_changed =
-            i > 0 && has_floor(positions[i]) && positions[i].floor != positions[i - 1].floor;
-        if (keep.empty() || i + 1 == positions.size() || floor_changed ||
-            positions[i].header.t_ns - positions[keep.back()].header.t_ns >= kThinInterval_ns) {
-            keep.push_back(i);
-        }
-    }
-    return keep;
+// Positions read in order: a vector's or a PositionLog's.
+struct Positions {
+    size_t size;
+    std::function<void(const std::function<void(const pn_position_t&)>&)> for_each;
+};
+
+Positions positions_of(const std::vector<pn_position_t>& v) {
+    return {v.size(), [&v](const std::function<void(const pn_position_t&)>& f) {
+                for (const auto& p : v) f(p);
+            }};
 }
 
-// The last position at or before t_ns (the first one when none is).
-size_t position_at(const std::vector<pn_position_t>& positions, int64_t t_ns) {
-    size_t lo = 0, hi = positions.size();
-    while (lo < hi) {
-        const size_t mid = (lo + hi) / 2;
-        if (positions[mid].header.t_ns <= t_ns)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo == 0 ? 0 : lo - 1;
+Positions positions_of(const PositionLog& log) {
+    return {log.size(), [&log](const std::function<void(const pn_position_t&)>& f) { log.for_each(f); }};
 }
+
+// The positions GeoJSON and GPX draw: at most one per kThinInterval_ns, each
+// floor change, and the last.
+class Thinning {
+public:
+    explicit Thinning(size_t count) : count_(count) {}
+    bool keep(const pn_position_t& p) {
+        const bool floor_changed = index_ > 0 && has_floor(p) && p.floor != previous_floor_;
+        const bool kept = index_ == 0 || index_ + 1 == count_ || floor_changed ||
+                          p.header.t_ns - kept_t_ns_ >= kThinInterval_ns;
+        if (kept) kept_t_ns_ = p.header.t_ns;
+        previous_floor_ = p.floor;
+        ++index_;
+        return kept;
+    }
+
+private:
+    size_t count_;
+    size_t index_ = 0;
+    int64_t kept_t_ns_ = 0;
+    int32_t previous_floor_ = 0;
+};
 
 nlohmann::json coordinates(const double enu[3], const Origin& origin) {
     if (!origin.known) return {enu[0], enu[1], enu[2]};
@@ -103,76 +81,70 @@ nlohmann::json coordinates(const double enu[3], const Origin& origin) {
 
 }  // namespace
 
-void write_track_csv(const std::string& path, const std::vector<pn_position_t>& positions) {
-    OutFile out(path);
-    std::fprintf(out.get(), "t,x,y,z,heading_deg,floor,cov_xx,cov_xy,cov_yy,cov_zz\n");
-    for (const auto& p : positions) {
-        char floor[16] = "";
-        if (has_floor(p)) std::snprintf(floor, sizeof floor, "%d", p.floor);
-        std::fprintf(out.get(), "%.9f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n",
-                     static_cast<double>(p.header.t_ns) * 1e-9, p.pos_enu_m[0], p.pos_enu_m[1],
-                     p.pos_enu_m[2], heading_deg(p.heading_rad), floor, p.cov_enu_m2[0], p.cov_enu_m2[1],
-                     p.cov_enu_m2[4], p.cov_enu_m2[8]);
-    }
-    out.close();
-}
+namespace {
 
-void write_geo_track_csv(const std::string& path, const std::vector<pn_position_t>& positions,
-                         const Origin& origin) {
-    if (!origin.known)
-        throw std::runtime_error(path + ": latitude and longitude need a geodetic origin (--origin, the config's, "
-                                        "a map's or a GNSS fix's); none is known");
-    OutFile out(path);
-    std::fprintf(out.get(), "t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m\n");
-    for (const auto& p : positions) {
-        double lat = 0, lon = 0, h = 0;
-        geodesy::enu_to_geodetic(origin, p.pos_enu_m, &lat, &lon, &h);
-        char floor[16] = "";
-        if (has_floor(p)) std::snprintf(floor, sizeof floor, "%d", p.floor);
-        std::fprintf(out.get(), "%.9f,%.10f,%.10f,%.4f,%.4f,%s,%s,%.4g\n", static_cast<double>(p.header.t_ns) * 1e-9,
-                     lat, lon, h, heading_deg(p.heading_rad), floor, position_source_name(p.source), h_sigma_m(p));
-    }
-    out.close();
-}
-
-void write_steps_csv(const std::string& path, const std::vector<pn_stride_t>& strides) {
-    OutFile out(path);
-    std::fprintf(
-        out.get(),
-        "index,t_start,t_end,dx,dy,dz,length_m,heading_change_deg,class,cov_xx,cov_xy,cov_yy,cov_zz\n");
-    for (const auto& s : strides) {
-        std::fprintf(out.get(), "%d,%.9f,%.9f,%.6f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n", s.index,
-                     static_cast<double>(s.t_start_ns) * 1e-9, static_cast<double>(s.header.t_ns) * 1e-9,
-                     s.displacement_enu_m[0], s.displacement_enu_m[1], s.displacement_enu_m[2], s.length_m,
-                     s.heading_change_rad * kRadToDeg, class_name(s.stride_class), s.cov_displacement_m2[0],
-                     s.cov_displacement_m2[1], s.cov_displacement_m2[4], s.cov_displacement_m2[8]);
-    }
-    out.close();
-}
-
-void write_geojson(const std::string& path, const std::vector<pn_position_t>& positions,
-                   const std::vector<pn_stride_t>& strides, const Origin& origin, const GeoJsonExtras& extras) {
+void write_geojson_of(const std::string& path, const Positions& positions, const std::vector<pn_stride_t>& strides,
+                      const Origin& origin, const GeoJsonExtras& extras) {
     using nlohmann::json;
     json features = json::array();
     json line = json::array();
     json times = json::array(), sources = json::array(), floors = json::array();
-    json position_points = json::array();
-    for (size_t i : thinned(positions)) {
-        const pn_position_t& p = positions[i];
-        line.push_back(coordinates(p.pos_enu_m, origin));
-        times.push_back(static_cast<double>(p.header.t_ns) * 1e-9);
-        sources.push_back(position_source_name(p.source));
-        floors.push_back(floor_of(p));
-        if (extras.position_points) {
-            position_points.push_back(point_feature(line.back(), {{"kind", "position"},
-                                                                  {"t_s", times.back()},
-                                                                  {"source", sources.back()},
-                                                                  {"floor", floors.back()},
-                                                                  {"heading_deg", heading_deg(p.heading_rad)},
-                                                                  {"h_sigma_m", h_sigma_m(p)}}));
+    json position_points = json::array(), floor_changes = json::array(), source_changes = json::array();
+    // Each stride's point is the last position at or before its time (the first when none is):
+    // the positions and the strides, each in time order, walked together.
+    std::vector<size_t> by_time(strides.size());
+    for (size_t k = 0; k < by_time.size(); ++k) by_time[k] = k;
+    std::stable_sort(by_time.begin(), by_time.end(),
+                     [&](size_t a, size_t b) { return strides[a].header.t_ns < strides[b].header.t_ns; });
+    std::vector<pn_position_t> stride_at(strides.size());
+    size_t next_stride = 0;
+    Thinning thinning(positions.size);
+    bool have_previous = false, have_floor = false;
+    pn_position_t previous{};
+    int32_t last_floor = 0;
+    positions.for_each([&](const pn_position_t& p) {
+        while (next_stride < by_time.size() && p.header.t_ns > strides[by_time[next_stride]].header.t_ns)
+            stride_at[by_time[next_stride++]] = have_previous ? previous : p;
+        if (thinning.keep(p)) {
+            line.push_back(coordinates(p.pos_enu_m, origin));
+            times.push_back(static_cast<double>(p.header.t_ns) * 1e-9);
+            sources.push_back(position_source_name(p.source));
+            floors.push_back(floor_of(p));
+            if (extras.position_points) {
+                position_points.push_back(point_feature(line.back(), {{"kind", "position"},
+                                                                      {"t_s", times.back()},
+                                                                      {"source", sources.back()},
+                                                                      {"floor", floors.back()},
+                                                                      {"heading_deg", heading_deg(p.heading_rad)},
+                                                                      {"h_sigma_m", h_sigma_m(p)}}));
+            }
         }
-    }
-    if (!positions.empty()) {
+        if (has_floor(p)) {
+            if (have_floor && p.floor != last_floor) {
+                floor_changes.push_back(
+                    {{"type", "Feature"},
+                     {"geometry", {{"type", "Point"}, {"coordinates", coordinates(p.pos_enu_m, origin)}}},
+                     {"properties",
+                      {{"kind", "floor_change"},
+                       {"t_s", static_cast<double>(p.header.t_ns) * 1e-9},
+                       {"from_floor", last_floor},
+                       {"to_floor", p.floor}}}});
+            }
+            have_floor = true;
+            last_floor = p.floor;
+        }
+        if (have_previous && p.source != previous.source) {
+            source_changes.push_back(point_feature(coordinates(p.pos_enu_m, origin),
+                                                   {{"kind", "source_change"},
+                                                    {"t_s", static_cast<double>(p.header.t_ns) * 1e-9},
+                                                    {"from_source", position_source_name(previous.source)},
+                                                    {"to_source", position_source_name(p.source)}}));
+        }
+        previous = p;
+        have_previous = true;
+    });
+    while (next_stride < by_time.size()) stride_at[by_time[next_stride++]] = previous;
+    if (positions.size > 0) {
         features.push_back({{"type", "Feature"},
                             {"geometry", {{"type", "LineString"}, {"coordinates", line}}},
                             {"properties",
@@ -183,12 +155,11 @@ void write_geojson(const std::string& path, const std::vector<pn_position_t>& po
                               {"t_start_s", times.front()},
                               {"t_end_s", times.back()}}}});
     }
-    for (const auto& s : strides) {
-        if (positions.empty()) break;
-        const pn_position_t& p = positions[position_at(positions, s.header.t_ns)];
+    for (size_t k = 0; k < strides.size() && positions.size > 0; ++k) {
+        const pn_stride_t& s = strides[k];
         features.push_back(
             {{"type", "Feature"},
-             {"geometry", {{"type", "Point"}, {"coordinates", coordinates(p.pos_enu_m, origin)}}},
+             {"geometry", {{"type", "Point"}, {"coordinates", coordinates(stride_at[k].pos_enu_m, origin)}}},
              {"properties",
               {{"kind", "step"},
                {"index", s.index},
@@ -198,32 +169,8 @@ void write_geojson(const std::string& path, const std::vector<pn_position_t>& po
                {"heading_change_deg", s.heading_change_rad * kRadToDeg},
                {"class", class_name(s.stride_class)}}}});
     }
-    bool have_floor = false;
-    int32_t last_floor = 0;
-    for (const auto& p : positions) {
-        if (!has_floor(p)) continue;
-        if (have_floor && p.floor != last_floor) {
-            features.push_back(
-                {{"type", "Feature"},
-                 {"geometry", {{"type", "Point"}, {"coordinates", coordinates(p.pos_enu_m, origin)}}},
-                 {"properties",
-                  {{"kind", "floor_change"},
-                   {"t_s", static_cast<double>(p.header.t_ns) * 1e-9},
-                   {"from_floor", last_floor},
-                   {"to_floor", p.floor}}}});
-        }
-        have_floor = true;
-        last_floor = p.floor;
-    }
-    for (size_t i = 1; i < positions.size(); ++i) {
-        const pn_position_t& p = positions[i];
-        if (p.source == positions[i - 1].source) continue;
-        features.push_back(point_feature(coordinates(p.pos_enu_m, origin),
-                                         {{"kind", "source_change"},
-                                          {"t_s", static_cast<double>(p.header.t_ns) * 1e-9},
-                                          {"from_source", position_source_name(positions[i - 1].source)},
-                                          {"to_source", position_source_name(p.source)}}));
-    }
+    for (auto& f : floor_changes) features.push_back(std::move(f));
+    for (auto& f : source_changes) features.push_back(std::move(f));
     for (auto& f : position_points) features.push_back(std::move(f));
     if (extras.gnss_fixes != nullptr) {
         for (const pn_gnss_t& g : *extras.gnss_fixes) {
@@ -253,7 +200,7 @@ void write_geojson(const std::string& path, const std::vector<pn_position_t>& po
     out.close();
 }
 
-void write_gpx(const std::string& path, const std::vector<pn_position_t>& positions, const Origin& origin) {
+void write_gpx_of(const std::string& path, const Positions& positions, const Origin& origin) {
     OutFile out(path);
     std::FILE* f = out.get();
     std::fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
@@ -271,8 +218,9 @@ void write_gpx(const std::string& path, const std::vector<pn_position_t>& positi
     }
     std::fprintf(f, "  </metadata>\n  <trk>\n    <name>pednav track</name>\n    <trkseg>\n");
     const Origin place = origin.known ? origin : Origin{0.0, 0.0, 0.0, true, 0};
-    for (size_t i : thinned(positions)) {
-        const auto& p = positions[i];
+    Thinning thinning(positions.size);
+    positions.for_each([&](const pn_position_t& p) {
+        if (!thinning.keep(p)) return;
         double lat = 0, lon = 0, h = 0;
         geodesy::enu_to_geodetic(place, p.pos_enu_m, &lat, &lon, &h);
         std::fprintf(f, "      <trkpt lat=\"%.9f\" lon=\"%.9f\"><ele>%.3f</ele>", lat, lon, h);
@@ -283,8 +231,34 @@ void write_gpx(const std::string& path, const std::vector<pn_position_t>& positi
                      position_source_name(p.source));
         if (has_floor(p)) std::fprintf(f, "<extensions><pednav:floor>%d</pednav:floor></extensions>", p.floor);
         std::fprintf(f, "</trkpt>\n");
-    }
+    });
     std::fprintf(f, "    </trkseg>\n  </trk>\n</gpx>\n");
+    out.close();
+}
+
+}  // namespace
+
+void write_geojson(const std::string& path, const std::vector<pn_position_t>& positions,
+                   const std::vector<pn_stride_t>& strides, const Origin& origin, const GeoJsonExtras& extras) {
+    write_geojson_of(path, positions_of(positions), strides, origin, extras);
+}
+
+void write_geojson(const std::string& path, const PositionLog& positions, const std::vector<pn_stride_t>& strides,
+                   const Origin& origin, const GeoJsonExtras& extras) {
+    write_geojson_of(path, positions_of(positions), strides, origin, extras);
+}
+
+void write_gpx(const std::string& path, const std::vector<pn_position_t>& positions, const Origin& origin) {
+    write_gpx_of(path, positions_of(positions), origin);
+}
+
+void write_gpx(const std::string& path, const PositionLog& positions, const Origin& origin) {
+    write_gpx_of(path, positions_of(positions), origin);
+}
+
+void write_geo_track_csv(const std::string& path, const PositionLog& positions, const Origin& origin) {
+    GeoTrackCsvWriter out(path, origin);
+    positions.for_each([&](const pn_position_t& p) { out.add(p); });
     out.close();
 }
 

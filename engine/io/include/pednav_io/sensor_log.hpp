@@ -50,6 +50,16 @@ struct TruthPoint {
     std::string label;
 };
 
+// Records read per type: the sizes of SensorLog's vectors when it holds the
+// records, and the only record of them when it does not (RecordStream).
+struct RecordCounts {
+    size_t imu = 0;
+    size_t mag = 0;
+    size_t baro = 0;
+    size_t gnss = 0;
+    int64_t imu_first_t_ns = 0;  // time of the first IMU record, when imu > 0
+};
+
 struct SensorLog {
     std::string format;  // e.g. "pednav-csv", "xio-ngimu-csv", "microstrain-sensorconnect-a"
     std::string path;
@@ -65,6 +75,7 @@ struct SensorLog {
     std::string axes;                // the body axes of the records, e.g. "sensor x,y,z (NGIMU case)"
     size_t issues_not_listed = 0;    // issues beyond ReadOptions::max_issues: counted, not kept in `issues`
     int64_t utc_ns_at_zero = 0;      // UTC (ns since 1970) of t = 0 when the file tells it (NMEA dates), else 0
+    RecordCounts records;            // records read, per type
 
     const StreamInfo* stream(const std::string& name) const;
 };
