@@ -6,6 +6,7 @@
 
 #include "engine.hpp"
 #include "describe.hpp"
+#include "parsed_text_cache.hpp"
 #include "record_checks.hpp"
 
 namespace pednav::engine {
@@ -40,8 +41,11 @@ nlohmann::json describe_plugin(const pnp_descriptor_t* d) {
     p["mounts"] = mounts;  // from the mount: features; empty = any mount
     p["params_schema"] = nullptr;
     if (d->params_schema_json) {
-        auto schema = nlohmann::json::parse(d->params_schema_json, nullptr, false);
-        p["params_schema"] = schema.is_discarded() ? nlohmann::json(d->params_schema_json) : schema;
+        static ParsedTextCache<nlohmann::json> schemas;  // parsed once per process
+        p["params_schema"] = *schemas.get(d->params_schema_json, [](const std::string& text) {
+            auto schema = nlohmann::json::parse(text, nullptr, false);
+            return schema.is_discarded() ? nlohmann::json(text) : schema;
+        });
     }
     return p;
 }

@@ -8,6 +8,7 @@
 
 #include "describe.hpp"
 #include "loader.hpp"
+#include "parsed_text_cache.hpp"
 
 namespace pednav::engine {
 
@@ -140,7 +141,12 @@ Manifest read_manifest(const std::string& path) {
     std::string text(static_cast<size_t>(size > 0 ? size : 0), '\0');
     in.read(&text[0], static_cast<std::streamsize>(text.size()));
     if (!in) throw ManifestError{PN_E_IO, "manifest " + path + " cannot be read"};
-    return parse_manifest(text, path);
+    // Parsed once per process for the same path and text (parsed_text_cache.hpp: a manifest
+    // holds its plugins' parameter schemas); the file is read each time, so a
+    // rebuilt library's new manifest is seen.
+    static ParsedTextCache<Manifest> manifests;
+    return *manifests.get(path + '\0' + text,
+                          [&](const std::string&) { return parse_manifest(text, path); });
 }
 
 nlohmann::json manifest_json(const pnp_library_t* library, const std::string& file) {

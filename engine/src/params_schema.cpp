@@ -2,10 +2,13 @@
 #include "params_schema.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 #include <pednav_sdk/params_schema.hpp>
+
+#include "parsed_text_cache.hpp"
 
 namespace pednav::engine {
 
@@ -55,18 +58,25 @@ std::string hint_for(const std::string& key, const sdk::ParamsSchema& schema) {
     return best ? " (did you mean \"" + best->key + "\"?)" : " (pednav plugins --params lists them)";
 }
 
+// Each plugin's schema is parsed once per process (parsed_text_cache.hpp).
+std::shared_ptr<const sdk::ParamsSchema> parsed_schema(const char* schema_json) {
+    static ParsedTextCache<sdk::ParamsSchema> schemas;
+    return schemas.get(schema_json, [](const std::string& text) { return sdk::ParamsSchema::parse(text); });
+}
+
 }  // namespace
 
 void check_params_against_schema(const pnp_descriptor_t& plugin, const StageConfig& stage) {
     if (!plugin.params_schema_json) return;
     const std::string id = plugin.id;
-    sdk::ParamsSchema schema;
+    std::shared_ptr<const sdk::ParamsSchema> parsed;
     try {
-        schema = sdk::ParamsSchema::parse(plugin.params_schema_json);
+        parsed = parsed_schema(plugin.params_schema_json);
     } catch (const sdk::SchemaError& e) {
         throw ConfigProblem{PN_E_INTERNAL, stage.pointer + "/plugin",
                             "plugin " + id + " cannot be configured: its " + e.what()};
     }
+    const sdk::ParamsSchema& schema = *parsed;
     // parse_config re-serialised params from a JSON object: this parse holds.
     const nlohmann::json params = nlohmann::json::parse(stage.params_json);
     const std::string base = stage.pointer + "/params/";
