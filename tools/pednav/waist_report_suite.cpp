@@ -15,9 +15,6 @@ namespace pednav::cli {
 
 namespace {
 
-// Seeds of every simulated walk (the tests run 1-3).
-constexpr uint64_t kSeeds = 8;
-
 void print_spread(const char* what, std::vector<double> v) {
     std::printf("%s: mean %.2f median %.2f worst %.2f (%zu)\n", what,
                 v.empty() ? NAN : [&] {
@@ -39,10 +36,8 @@ sim::SimOptions waist_options(uint64_t seed, bool gnss) {
     return o;
 }
 
-}  // namespace
-
-void run_waist_suite(const std::string& waist, const std::string& foot, const std::string& data_dir,
-                     const std::vector<std::string>& plugin_dirs) {
+void run_ipol(const std::string& waist, const std::string& foot, const std::string& data_dir,
+              const std::vector<std::string>& plugin_dirs) {
     std::vector<double> step_diff, uturn_err;
     for (const std::string& t : waist_eval::ipol_waist_trials()) {
         const waist_eval::IpolWaistRun r = waist_eval::run_ipol_waist(data_dir, t, waist, plugin_dirs);
@@ -55,7 +50,8 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
     print_spread("ipol |U-turn - 180| deg", uturn_err);
 
     std::vector<double> rel, legs;
-    for (const waist_eval::LosoLeg& l : waist_eval::leave_one_subject_out(data_dir, waist, foot, plugin_dirs, 4.0)) {
+    for (const waist_eval::LosoLeg& l :
+         waist_eval::leave_one_subject_out(data_dir, waist, foot, plugin_dirs, 4.0)) {
         const double e = 100.0 * (l.waist_m / l.foot_m - 1.0);
         std::printf("ipol %-5s %-4s waist %6.2f m  foot %6.2f m  %+6.1f %%  (k %.3f without subject %s)\n",
                     l.trial.c_str(), l.out ? "out" : "back", l.waist_m, l.foot_m, e, l.k, l.subject.c_str());
@@ -64,56 +60,69 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
     }
     print_spread("ipol legs |waist / foot - 1| %", rel);
     print_spread("ipol legs, m (protocol 10 m)", legs);
+}
 
+void run_loop(const std::string& waist, const std::vector<std::string>& plugin_dirs, uint64_t seeds) {
     std::vector<double> closures;
     const sim::Route loop = sim::builtin_route("corridor_loop");
-    for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
+    for (uint64_t seed = 1; seed <= seeds; ++seed) {
         const sim::SimOutput out = sim::simulate(loop, waist_options(seed, false));
-        const auto errors = waist_eval::output_errors(waist_eval::run_sim_waist(out, loop, waist, plugin_dirs), out);
+        const auto errors =
+            waist_eval::output_errors(waist_eval::run_sim_waist(out, loop, waist, plugin_dirs), out);
         const double pct = errors.empty() ? NAN : 100.0 * errors.back().err_h_m / out.distance_m;
         std::printf("sim corridor_loop seed %llu  closure %.2f %% of %.0f m (no GNSS)\n",
                     static_cast<unsigned long long>(seed), pct, out.distance_m);
         closures.push_back(pct);
     }
     print_spread("sim corridor_loop closure %", closures);
+}
 
-    const sim::Route oi = sim::builtin_route("outdoor_indoor"), block = waist_eval::block_laps_route();
-    for (const sim::Route* route : {&oi, &block}) {
-        std::vector<double> drift, without_scale, gnss_err;
-        for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
-            sim::SimOutput out = sim::simulate(*route, waist_options(seed, true));
-            if (route == &block)
-                waist_eval::remove_fixes(out, waist_eval::kBlockOutageStartS, waist_eval::kBlockOutageEndS);
-            const auto errors =
-                waist_eval::output_errors(waist_eval::run_sim_waist(out, *route, waist, plugin_dirs), out);
-            const auto gap = waist_eval::longest_gnss_gap_s(out.gnss);
-            const waist_eval::Drift d = waist_eval::drift_in(errors, gap.first, gap.second);
-            int n = 0;
-            const double err = waist_eval::mean_error_of(errors, PN_POSITION_SOURCE_GNSS, &n);
-            std::printf("sim %-14s seed %llu  outage %.0f s, %.0f m: drift %.2f m (%.2f %%); GNSS mode error %.2f m "
-                        "(fixes' h_accuracy %.2f m)\n",
-                        route->name.c_str(), static_cast<unsigned long long>(seed), gap.second - gap.first,
-                        d.walked_m, d.max_m, 100.0 * d.max_m / d.walked_m, err, waist_eval::mean_h_accuracy_m(out.gnss));
-            // Where the drift comes from: the track's scale and rotation
-            // against the truth over the outage, and the true step length in
-            // it against the 30 s of fixes before it (what GNSS taught).
-            const double step_before_m = waist_eval::true_step_length_m(out, gap.first - 30.0, gap.first),
-                         step_in_m = waist_eval::true_step_length_m(out, gap.first, gap.second);
-            std::printf("    its sources: track scale %+.2f %%, rotation %+.2f deg; without the scale %.2f %%; true step "
-                        "%.3f m in the outage, %.3f m in the 30 s before (%+.2f %%)\n",
-                        d.scale_pct, d.rotation_deg, 100.0 * d.max_without_scale_m / d.walked_m, step_in_m,
-                        step_before_m, 100.0 * (step_in_m / step_before_m - 1.0));
-            drift.push_back(100.0 * d.max_m / d.walked_m);
-            without_scale.push_back(100.0 * d.max_without_scale_m / d.walked_m);
-            gnss_err.push_back(err);
-        }
-        print_spread(("sim " + route->name + " outage drift %").c_str(), drift);
-        print_spread(("sim " + route->name + " outage drift without the track's scale %").c_str(), without_scale);
-        print_spread(("sim " + route->name + " GNSS mode error m").c_str(), gnss_err);
+void run_outage(const sim::Route& route, const std::string& waist,
+                const std::vector<std::string>& plugin_dirs, uint64_t seeds) {
+    const bool block = route.name == waist_eval::block_laps_route().name;
+    std::vector<double> drift, without_scale, gnss_err;
+    int above_accuracy = 0;
+    for (uint64_t seed = 1; seed <= seeds; ++seed) {
+        sim::SimOutput out = sim::simulate(route, waist_options(seed, true));
+        if (block)
+            waist_eval::remove_fixes(out, waist_eval::kBlockOutageStartS, waist_eval::kBlockOutageEndS);
+        const auto errors =
+            waist_eval::output_errors(waist_eval::run_sim_waist(out, route, waist, plugin_dirs), out);
+        const auto gap = waist_eval::longest_gnss_gap_s(out.gnss);
+        const waist_eval::Drift d = waist_eval::drift_in(errors, gap.first, gap.second);
+        int n = 0;
+        const double err = waist_eval::mean_error_of(errors, PN_POSITION_SOURCE_GNSS, &n);
+        const double accuracy = waist_eval::mean_h_accuracy_m(out.gnss);
+        std::printf(
+            "sim %-14s seed %llu  outage %.0f s, %.0f m: drift %.2f m (%.2f %%); GNSS mode error %.2f m "
+            "(fixes' h_accuracy %.2f m, their own error %.2f m)\n",
+            route.name.c_str(), static_cast<unsigned long long>(seed), gap.second - gap.first, d.walked_m,
+            d.max_m, 100.0 * d.max_m / d.walked_m, err, accuracy, waist_eval::mean_fix_error_m(out, route));
+        // Where the drift comes from: the track's scale and rotation
+        // against the truth over the outage, and the true step length in
+        // it against the 30 s of fixes before it (what GNSS taught).
+        const double step_before_m = waist_eval::true_step_length_m(out, gap.first - 30.0, gap.first),
+                     step_in_m = waist_eval::true_step_length_m(out, gap.first, gap.second);
+        std::printf(
+            "    its sources: track scale %+.2f %%, rotation %+.2f deg; without the scale %.2f %%; true step "
+            "%.3f m in the outage, %.3f m in the 30 s before (%+.2f %%)\n",
+            d.scale_pct, d.rotation_deg, 100.0 * d.max_without_scale_m / d.walked_m, step_in_m, step_before_m,
+            100.0 * (step_in_m / step_before_m - 1.0));
+        drift.push_back(100.0 * d.max_m / d.walked_m);
+        without_scale.push_back(100.0 * d.max_without_scale_m / d.walked_m);
+        gnss_err.push_back(err);
+        above_accuracy += err >= accuracy;
     }
+    print_spread(("sim " + route.name + " outage drift %").c_str(), drift);
+    print_spread(("sim " + route.name + " outage drift without the track's scale %").c_str(), without_scale);
+    print_spread(("sim " + route.name + " GNSS mode error m").c_str(), gnss_err);
+    std::printf("sim %s GNSS mode error at or above the fixes' h_accuracy: %d of %zu seeds\n",
+                route.name.c_str(), above_accuracy, gnss_err.size());
+}
 
+void run_stairs(const std::string& waist, const std::vector<std::string>& plugin_dirs, uint64_t seeds) {
     const sim::Route stairs = sim::builtin_route("stairs");
-    for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
+    for (uint64_t seed = 1; seed <= seeds; ++seed) {
         const sim::SimOutput out = sim::simulate(stairs, waist_options(seed, false));
         const waist_eval::StairsScore s =
             waist_eval::stairs_score(waist_eval::run_sim_waist(out, stairs, waist, plugin_dirs), out);
@@ -121,6 +130,21 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
                     static_cast<unsigned long long>(seed), s.up_labelled_up, s.up_steps, s.down_labelled_down,
                     s.down_steps, s.level_labelled_stairs, s.level_steps);
     }
+}
+
+}  // namespace
+
+void run_waist_suite(const std::string& waist, const std::string& foot, const std::string& data_dir,
+                     const std::vector<std::string>& plugin_dirs, uint64_t seeds, const std::string& only) {
+    const auto wanted = [&](const std::string& name) {
+        return only.empty() || name.find(only) != std::string::npos;
+    };
+    if (wanted("ipol")) run_ipol(waist, foot, data_dir, plugin_dirs);
+    if (wanted("corridor_loop")) run_loop(waist, plugin_dirs, seeds);
+    const sim::Route oi = sim::builtin_route("outdoor_indoor"), block = waist_eval::block_laps_route();
+    for (const sim::Route* route : {&oi, &block})
+        if (wanted(route->name)) run_outage(*route, waist, plugin_dirs, seeds);
+    if (wanted("stairs")) run_stairs(waist, plugin_dirs, seeds);
 }
 
 }  // namespace pednav::cli

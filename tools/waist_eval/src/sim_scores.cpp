@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <pednav_geodesy/enu.hpp>
 #include <pednav_sim/route.hpp>
 #include <pednav_sim/simulate.hpp>
 
@@ -141,6 +142,18 @@ double mean_h_accuracy_m(const std::vector<pn_gnss_t>& fixes) {
     double s = 0;
     for (const pn_gnss_t& g : fixes) s += g.h_accuracy_m;
     return fixes.empty() ? NAN : s / static_cast<double>(fixes.size());
+}
+
+double mean_fix_error_m(const sim::SimOutput& out, const sim::Route& route) {
+    const geodesy::GeodeticPoint origin{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m};
+    double s = 0;
+    for (const pn_gnss_t& g : out.gnss) {
+        double enu[3];
+        geodesy::geodetic_to_enu(origin, g.lat_deg, g.lon_deg, g.height_m, enu);
+        const sim::TruthSample& t = out.truth[truth_index(out, g.header.t_ns)];
+        s += std::hypot(enu[0] - t.pos_enu_m[0], enu[1] - t.pos_enu_m[1]);
+    }
+    return out.gnss.empty() ? NAN : s / static_cast<double>(out.gnss.size());
 }
 
 sim::Route block_laps_route() {

@@ -69,6 +69,9 @@ double true_step_length_m(const sim::SimOutput& out, double t0_s, double t1_s);
 // Mean horizontal error of the outputs of `source`, and how many there are.
 double mean_error_of(const std::vector<OutputError>& errors, int source, int* count);
 double mean_h_accuracy_m(const std::vector<pn_gnss_t>& fixes);
+// Mean horizontal error of the fixes themselves against the truth at their
+// time (in the route's ENU frame).
+double mean_fix_error_m(const sim::SimOutput& out, const sim::Route& route);
 
 // Two laps of a 100 m x 60 m block outdoors (640 m, 8 turns): the long walk
 // the 60 s GNSS outage is cut from (fixes of 300 to 360 s removed).
