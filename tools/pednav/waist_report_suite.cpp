@@ -10,6 +10,7 @@
 #include <pednav_sim/simulate.hpp>
 #include <pednav_waist_eval/ipol_scores.hpp>
 #include <pednav_waist_eval/sim_scores.hpp>
+#include <pednav_waist_eval/step_models.hpp>
 
 namespace pednav::cli {
 
@@ -36,12 +37,12 @@ sim::SimOptions waist_options(uint64_t seed, bool gnss) {
     return o;
 }
 
-void run_ipol(const std::string& waist, const std::string& foot, const std::string& data_dir,
+void run_ipol(const std::vector<waist_eval::IpolTrial>& trials, const std::string& waist, const std::string& data_dir,
               const std::vector<std::string>& plugin_dirs) {
     std::vector<double> step_diff, uturn_err;
-    for (const std::string& t : waist_eval::ipol_waist_trials()) {
-        const waist_eval::IpolWaistRun r = waist_eval::run_ipol_waist(data_dir, t, waist, plugin_dirs);
-        std::printf("ipol %-5s steps %2d footsteps %2d  U-turn %6.1f deg\n", t.c_str(), r.steps, r.footsteps,
+    for (const waist_eval::IpolTrial& t : trials) {
+        const waist_eval::IpolWaistRun& r = t.run;
+        std::printf("ipol %-5s steps %2d footsteps %2d  U-turn %6.1f deg\n", t.trial.c_str(), r.steps, r.footsteps,
                     r.uturn_deg);
         step_diff.push_back(std::abs(r.steps - r.footsteps));
         uturn_err.push_back(std::abs(r.uturn_deg - 180.0));
@@ -50,8 +51,7 @@ void run_ipol(const std::string& waist, const std::string& foot, const std::stri
     print_spread("ipol |U-turn - 180| deg", uturn_err);
 
     std::vector<double> rel, legs;
-    for (const waist_eval::LosoLeg& l :
-         waist_eval::leave_one_subject_out(data_dir, waist, foot, plugin_dirs, 4.0)) {
+    for (const waist_eval::LosoLeg& l : waist_eval::leave_one_subject_out(trials, data_dir, waist, plugin_dirs, 4.0)) {
         const double e = 100.0 * (l.waist_m / l.foot_m - 1.0);
         std::printf("ipol %-5s %-4s waist %6.2f m  foot %6.2f m  %+6.1f %%  (k %.3f without subject %s)\n",
                     l.trial.c_str(), l.out ? "out" : "back", l.waist_m, l.foot_m, e, l.k, l.subject.c_str());
@@ -60,6 +60,38 @@ void run_ipol(const std::string& waist, const std::string& foot, const std::stri
     }
     print_spread("ipol legs |waist / foot - 1| %", rel);
     print_spread("ipol legs, m (protocol 10 m)", legs);
+}
+
+void run_step_models(const std::vector<waist_eval::IpolTrial>& trials) {
+    std::vector<double> rise_cm;
+    for (const auto& t : trials)
+        for (const auto* steps : {&t.run.out_steps, &t.run.back_steps})
+            for (const waist_eval::IpolStep& st : *steps) rise_cm.push_back(100.0 * st.pelvis_rise_m);
+    std::printf("ipol step models: pelvis rise per step, cm: 5th percentile %.1f, median %.1f, 95th %.1f (%zu steps)\n",
+                eval::percentile(rise_cm, 5), eval::percentile(rise_cm, 50), eval::percentile(rise_cm, 95),
+                rise_cm.size());
+    const auto summary = [](const std::vector<double>& e_pct) {
+        std::vector<double> a;
+        int within = 0;
+        double sum = 0;
+        for (double e : e_pct) a.push_back(std::abs(e)), within += std::abs(e) <= 5.0, sum += std::abs(e);
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "mean %.1f %% median %.1f %% worst %.1f %%, %d of %zu within 5 %%",
+                      a.empty() ? NAN : sum / a.size(), eval::percentile(a, 50), eval::percentile(a, 100), within,
+                      a.size());
+        return std::string(buf);
+    };
+    // A height the dataset lacks (subject 10) is the preset's user_height_m.
+    for (const waist_eval::StepModelScores& m : waist_eval::score_step_models(trials, 1.7)) {
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (const auto& [subject, c] : m.constant_by_subject) lo = std::min(lo, c), hi = std::max(hi, c);
+        std::printf("ipol step model %s\n  other subjects: %s\n  own legs: %s\n  other trial: %s\n"
+                    "  first constant per subject (own legs) %.3f to %.3f (+%.0f %%):",
+                    m.name.c_str(), summary(m.loso_error_pct).c_str(), summary(m.own_error_pct).c_str(),
+                    summary(m.other_trial_error_pct).c_str(), lo, hi, 100.0 * (hi / lo - 1.0));
+        for (const auto& [subject, c] : m.constant_by_subject) std::printf(" %s %.3f", subject.c_str(), c);
+        std::printf("\n");
+    }
 }
 
 void run_loop(const std::string& waist, const std::vector<std::string>& plugin_dirs, uint64_t seeds) {
@@ -139,7 +171,11 @@ void run_waist_suite(const std::string& waist, const std::string& foot, const st
     const auto wanted = [&](const std::string& name) {
         return only.empty() || name.find(only) != std::string::npos;
     };
-    if (wanted("ipol")) run_ipol(waist, foot, data_dir, plugin_dirs);
+    if (wanted("ipol") || wanted("ipol step models")) {
+        const auto trials = waist_eval::ipol_trials(data_dir, waist, foot, plugin_dirs);
+        if (wanted("ipol")) run_ipol(trials, waist, data_dir, plugin_dirs);
+        if (wanted("ipol step models")) run_step_models(trials);
+    }
     if (wanted("corridor_loop")) run_loop(waist, plugin_dirs, seeds);
     const sim::Route oi = sim::builtin_route("outdoor_indoor"), block = waist_eval::block_laps_route();
     for (const sim::Route* route : {&oi, &block})

@@ -13,8 +13,8 @@ namespace pednav::cli {
 // calibrated leave one subject out against the foot pipeline's legs), then
 // the simulated waist walks (loop closure without GNSS, GNSS outages, the
 // error with GNSS, stairs), seeds 1 to `seeds`; with `only` not empty,
-// only the walks whose name contains it ("ipol", "corridor_loop",
-// "outdoor_indoor", "block_laps", "stairs"). Throws std::runtime_error when
+// only the walks whose name contains it ("ipol", "ipol step models",
+// "corridor_loop", "outdoor_indoor", "block_laps", "stairs"). Throws std::runtime_error when
 // a walk fails.
 void run_waist_suite(const std::string& waist_preset_json, const std::string& foot_preset_json,
                      const std::string& data_dir, const std::vector<std::string>& plugin_dirs,

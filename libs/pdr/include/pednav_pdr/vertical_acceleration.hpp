@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: Apache-2.0
+// The vertical acceleration of a body-worn sensor at any tilt: the gravity
+// direction u is the specific force low-passed with a time constant (its
+// mean over a few steps is gravity: the sensor's tilt is never assumed), and
+//
+//   a_v = f . u - |g_lp|
+//
+// (the norm of the low-pass also absorbs an accelerometer scale error). The
+// rate of turn about the vertical is w . u. Used by the waist step detector
+// and by anything that needs the same signal (the pelvis' rise over a step).
+#pragma once
+
+#include <cstdint>
+
+namespace pednav::pdr {
+
+class VerticalAcceleration {
+public:
+    // time_constant_s > 0.
+    explicit VerticalAcceleration(double time_constant_s) : tau_s_(time_constant_s) {}
+
+    // One sample of the specific force (sensor axes, m/s^2): returns a_v.
+    // The first sample starts the low-pass.
+    double push(int64_t t_ns, const double f_mps2[3]);
+    // A vector (a gyro sample) projected on the vertical of the last push.
+    double along_vertical(const double v[3]) const;
+    // Time since the sample before the last push, s (0 after the first).
+    double dt_s() const { return dt_s_; }
+    void reset() { started_ = false; }
+
+private:
+    double tau_s_;
+    bool started_ = false;
+    int64_t t_last_ns_ = 0;
+    double dt_s_ = 0;
+    double g_lp_[3] = {0, 0, 0};
+    double g_ = 0;
+};
+
+}  // namespace pednav::pdr
