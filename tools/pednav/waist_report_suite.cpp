@@ -112,7 +112,7 @@ void run_loop(const std::string& waist, const std::vector<std::string>& plugin_d
 void run_outage(const sim::Route& route, const std::string& waist,
                 const std::vector<std::string>& plugin_dirs, uint64_t seeds) {
     const bool block = route.name == waist_eval::block_laps_route().name;
-    std::vector<double> drift, without_scale, gnss_err;
+    std::vector<double> drift, without_scale, gnss_err, nees;
     int above_accuracy = 0;
     for (uint64_t seed = 1; seed <= seeds; ++seed) {
         sim::SimOutput out = sim::simulate(route, waist_options(seed, true));
@@ -125,11 +125,14 @@ void run_outage(const sim::Route& route, const std::string& waist,
         int n = 0;
         const double err = waist_eval::mean_error_of(errors, PN_POSITION_SOURCE_GNSS, &n);
         const double accuracy = waist_eval::mean_h_accuracy_m(out.gnss);
+        const double t_fix0_s = out.gnss.empty() ? 0.0 : static_cast<double>(out.gnss.front().header.t_ns) * 1e-9;
         std::printf(
             "sim %-14s seed %llu  outage %.0f s, %.0f m: drift %.2f m (%.2f %%); GNSS mode error %.2f m "
-            "(fixes' h_accuracy %.2f m, their own error %.2f m)\n",
+            "(fixes' h_accuracy %.2f m, their own error %.2f m, %.2f m in their first 10 s), its NEES per axis %.2f\n",
             route.name.c_str(), static_cast<unsigned long long>(seed), gap.second - gap.first, d.walked_m,
-            d.max_m, 100.0 * d.max_m / d.walked_m, err, accuracy, waist_eval::mean_fix_error_m(out, route));
+            d.max_m, 100.0 * d.max_m / d.walked_m, err, accuracy, waist_eval::mean_fix_error_m(out, route),
+            waist_eval::mean_fix_error_m(out, route, t_fix0_s, t_fix0_s + 10.0),
+            waist_eval::mean_nees_per_axis_of(errors, PN_POSITION_SOURCE_GNSS));
         // Where the drift comes from: the track's scale and rotation
         // against the truth over the outage, and the true step length in
         // it against the 30 s of fixes before it (what GNSS taught).
@@ -143,11 +146,13 @@ void run_outage(const sim::Route& route, const std::string& waist,
         drift.push_back(100.0 * d.max_m / d.walked_m);
         without_scale.push_back(100.0 * d.max_without_scale_m / d.walked_m);
         gnss_err.push_back(err);
+        nees.push_back(waist_eval::mean_nees_per_axis_of(errors, PN_POSITION_SOURCE_GNSS));
         above_accuracy += err >= accuracy;
     }
     print_spread(("sim " + route.name + " outage drift %").c_str(), drift);
     print_spread(("sim " + route.name + " outage drift without the track's scale %").c_str(), without_scale);
     print_spread(("sim " + route.name + " GNSS mode error m").c_str(), gnss_err);
+    print_spread(("sim " + route.name + " GNSS mode NEES per axis").c_str(), nees);
     std::printf("sim %s GNSS mode error at or above the fixes' h_accuracy: %d of %zu seeds\n",
                 route.name.c_str(), above_accuracy, gnss_err.size());
 }
