@@ -10,6 +10,7 @@
 // and by anything that needs the same signal (the pelvis' rise over a step).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace pednav::pdr {
@@ -21,9 +22,23 @@ public:
 
     // One sample of the specific force (sensor axes, m/s^2): returns a_v.
     // The first sample starts the low-pass.
-    double push(int64_t t_ns, const double f_mps2[3]);
+    double push(int64_t t_ns, const double f_mps2[3]) {
+        dt_s_ = started_ ? static_cast<double>(t_ns - t_last_ns_) * 1e-9 : 0.0;
+        if (!started_) {
+            for (int i = 0; i < 3; ++i) g_lp_[i] = f_mps2[i];
+            started_ = true;
+        } else {
+            const double k = 1.0 - std::exp(-dt_s_ / tau_s_);
+            for (int i = 0; i < 3; ++i) g_lp_[i] += k * (f_mps2[i] - g_lp_[i]);
+        }
+        t_last_ns_ = t_ns;
+        g_ = std::sqrt(g_lp_[0] * g_lp_[0] + g_lp_[1] * g_lp_[1] + g_lp_[2] * g_lp_[2]);
+        return g_ > 0 ? (f_mps2[0] * g_lp_[0] + f_mps2[1] * g_lp_[1] + f_mps2[2] * g_lp_[2]) / g_ - g_ : 0.0;
+    }
     // A vector (a gyro sample) projected on the vertical of the last push.
-    double along_vertical(const double v[3]) const;
+    double along_vertical(const double v[3]) const {
+        return g_ > 0 ? (v[0] * g_lp_[0] + v[1] * g_lp_[1] + v[2] * g_lp_[2]) / g_ : 0.0;
+    }
     // Time since the sample before the last push, s (0 after the first).
     double dt_s() const { return dt_s_; }
     void reset() { started_ = false; }
