@@ -93,7 +93,13 @@ TEST_CASE("issue 14: simulated outdoor_indoor: under the fixes' accuracy with GN
         CAPTURE(d.walked_m);
         CAPTURE(d.max_m);
         CHECK(n_gnss > 50);
+        // Measured 0.82, 0.88, 0.85 m. Over seeds 1-32, 6 walks are above the
+        // fixes' 2.24 m (seed 4: 2.51 m): their error is correlated over 60 s
+        // and this walk has 58 s of fixes before the building and 60 s after
+        // (docs/waist-pipeline.md). The outputs' covariance is the size of
+        // their error (NEES per axis 0.25, 0.34, 0.30; 1.09 over seeds 1-32).
         CHECK(err_gnss < mean_accuracy_m(out.gnss));
+        CHECK(waist_eval::mean_nees_per_axis_of(errors, PN_POSITION_SOURCE_GNSS) < 3.0);
         CHECK(d.walked_m > 70.0);
         // The issue's target, 2 %; measured 1.02, 0.83 and 1.59 %, mostly
         // the 2.3 % longer steps of the simulated walker indoors than on the
@@ -185,6 +191,7 @@ TEST_CASE("issue 14: simulated long outdoor walk with a 60 s GNSS outage: drift 
         // the fixes' correlated error were estimated).
         CHECK(d.max_m < 0.016 * d.walked_m);
         CHECK(err_gnss < mean_accuracy_m(out.gnss));
+        CHECK(waist_eval::mean_nees_per_axis_of(errors, PN_POSITION_SOURCE_GNSS) < 3.0);
         drift_pct.push_back(100.0 * d.max_m / d.walked_m);
         gnss_err.push_back(err_gnss);
     }

@@ -40,8 +40,9 @@ constexpr const char* kUsage =
     "usage: pednav report --out DIR [--data DIR] [--mounts foot,chest,handheld,waist] [--only TEXT] [--seed N]\n"
     "                     [--no-recordings] [--no-sim] [--plugin-dir DIR] [--patch JSON] [--detector NAME]\n"
     "       pednav report --suite full|quick|sim|sweep|tables|hupt|clip|chest [--data DIR] [--plugin-dir DIR]\n"
-    "       pednav report --suite waist [--data DIR] [--plugin-dir DIR]  (the waist pipeline's tables)\n"
     "                     [--patch JSON] [--detector NAME]\n"
+    "       pednav report --suite waist [--data DIR] [--plugin-dir DIR] [--seeds N] [--only TEXT] [--patch JSON]\n"
+    "                     (the waist pipeline's tables; the simulated walks of seeds 1 to N, 8 by default)\n"
     "  --data      the shared recordings (default: $PEDNAV_SHARED_DATA_DIR, ../shared/data, or next to the "
     "build)\n"
     "  --only      run only the walks whose name contains TEXT\n"
@@ -318,9 +319,9 @@ int run_chest_suite(std::string data, const std::vector<std::string>& plugin_dir
 const char* const pednav_cmd_report_usage = kUsage;
 
 int pednav_cmd_report(const std::vector<std::string>& args) {
-    std::string out, data, only, suite = "accuracy", detector, accuracy_option;
+    std::string out, data, only, suite = "accuracy", detector, accuracy_option, not_waist_option;
     std::vector<std::string> mounts{"foot", "chest", "handheld", "waist"}, plugin_dirs{cli::default_plugin_dir()};
-    uint64_t seed = 1;
+    uint64_t seed = 1, seeds = 0;
     bool recordings = true, simulated = true, patched = false;
     nlohmann::json patch = nlohmann::json::object();
     pednav::cli::Args in(args, kUsage);
@@ -330,6 +331,7 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
         if (a == "--out" || a == "--only" || a == "--seed" || a == "--no-recordings" || a == "--no-sim" ||
             a == "--mounts")
             accuracy_option = a;
+        if (accuracy_option == a && a != "--only") not_waist_option = a;
         if (a == "--out")
             out = value();
         else if (a == "--data")
@@ -338,6 +340,8 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             only = value();
         else if (a == "--seed")
             seed = pednav::cli::parse_count(value(), a);
+        else if (a == "--seeds")
+            seeds = pednav::cli::parse_count(value(), a);
         else if (a == "--plugin-dir")
             plugin_dirs.push_back(value());
         else if (a == "--no-recordings")
@@ -361,6 +365,7 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
             throw pednav::cli::UsageError("unknown option " + a);
     }
     const nlohmann::json detector_and_patch = foot_patch(detector.empty() ? "shoe" : detector, patch);
+    if (seeds > 0 && suite != "waist") throw pednav::cli::UsageError("--seeds is an option of --suite waist");
     if (suite == "chest") {
         if (!accuracy_option.empty() || patched)
             throw pednav::cli::UsageError((accuracy_option.empty() ? std::string("--patch/--detector") : accuracy_option) +
@@ -368,15 +373,16 @@ int pednav_cmd_report(const std::vector<std::string>& args) {
         return run_chest_suite(data, plugin_dirs);
     }
     if (suite == "waist") {
-        if (!accuracy_option.empty() || patched)
-            throw pednav::cli::UsageError((patched ? std::string("--patch/--detector") : accuracy_option) +
+        if (!not_waist_option.empty() || !detector.empty())
+            throw pednav::cli::UsageError((detector.empty() ? not_waist_option : std::string("--detector")) +
                                           " is not an option of --suite waist");
         try {
             if (data.empty()) data = default_data_dir();
             if (!exists(data)) throw std::runtime_error("no shared recordings at " + data + " (--data)");
-            pednav::cli::run_waist_suite(cli::read_text_file(cli::default_config_dir() + "/waist.json"),
-                                         cli::read_text_file(cli::default_config_dir() + "/foot.json"), data,
-                                         plugin_dirs);
+            nlohmann::json waist = nlohmann::json::parse(cli::read_text_file(cli::default_config_dir() + "/waist.json"));
+            waist.merge_patch(patch);
+            pednav::cli::run_waist_suite(waist.dump(), cli::read_text_file(cli::default_config_dir() + "/foot.json"),
+                                         data, plugin_dirs, seeds > 0 ? seeds : 8, only);
             return 0;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "pednav report: %s\n", e.what());

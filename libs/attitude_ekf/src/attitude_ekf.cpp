@@ -7,6 +7,7 @@
 #include <pednav_navmath/alignment.hpp>
 #include <pednav_navmath/angles.hpp>
 #include <pednav_navmath/heading.hpp>
+#include <pednav_navmath/kalman_update.hpp>
 
 namespace pednav::attitude_ekf {
 
@@ -101,10 +102,13 @@ void AttitudeEkf::propagate(const Vec3& w, double dt) {
     q_ = navmath::quat_mul_unit(q_, navmath::quat_exp(w * dt));  // eq. (4.4)-(4.5)
     // P <- Phi P Phi^T + Q with Phi = [[I, -dt R, 0], [0, I, 0], [0, 0, I]]
     // (eq. 4.10 for errors defined as true minus estimated), by blocks.
+    // P_aa gains B P_ag^T + P_ag B^T + B P_gg B^T = X + X^T with
+    // X = (P_ag + B P_gg / 2) B^T (P_gg symmetric): exactly symmetric.
     const Mat3 B = -dt * q_.toRotationMatrix();
-    const Mat3 Pag = P_.block<3, 3>(0, 3), Pgg = P_.block<3, 3>(3, 3), Pgb = P_.block<3, 3>(3, 6);
+    const Mat3 Pgg = P_.block<3, 3>(3, 3), Pgb = P_.block<3, 3>(3, 6);
     const Mat3 BPgg = B * Pgg;
-    P_.block<3, 3>(0, 0) += B * Pag.transpose() + Pag * B.transpose() + BPgg * B.transpose();
+    const Mat3 X = (P_.block<3, 3>(0, 3) + 0.5 * BPgg) * B.transpose();
+    P_.block<3, 3>(0, 0) += X + X.transpose();
     P_.block<3, 3>(0, 3) += BPgg;
     P_.block<3, 3>(0, 6) += B * Pgb;
     P_.block<3, 2>(0, 9) += B * P_.block<3, 2>(3, 9);  // the deviation's block of Phi is I
@@ -156,32 +160,28 @@ void AttitudeEkf::end_window() {
     win_norm_sum_ = win_norm_sq_ = 0;
     win_still_ = true;
 
-    // Gravity: y = [f_E, f_N] = H dx.
-    Eigen::Matrix<double, 2, kN> H = Eigen::Matrix<double, 2, kN>::Zero();
-    H(0, 1) = -g_mps2_;
-    H(1, 0) = g_mps2_;
-    H.block<1, 3>(0, 6) = R.row(0);
-    H.block<1, 3>(1, 6) = R.row(1);
+    // Gravity: y = [f_E, f_N] = H dx, H = [[0, -g, 0, 0, R_E], [g, 0, 0, 0, R_N]];
+    // R = sd^2 I, so one component after the other (the joint update's
+    // posterior, navmath/kalman_update.hpp).
     const double sd = sd_norm < c_.quiet_accel_sd_mps2 ? c_.gravity_sd_quiet_mps2 : c_.gravity_sd_moving_mps2;
-    update<2>(Eigen::Vector2d(f.x(), f.y()), H, sd * sd);
-    // Still: y = mean w_m - bg = dbg.
+    VecX dx = VecX::Zero();
+    const int idx_e[4] = {1, 6, 7, 8}, idx_n[4] = {0, 6, 7, 8};
+    const double h_e[4] = {-g_mps2_, R(0, 0), R(0, 1), R(0, 2)}, h_n[4] = {g_mps2_, R(1, 0), R(1, 1), R(1, 2)};
+    navmath::kalman_scalar_update(P_, dx, idx_e, h_e, f.x(), sd * sd);
+    navmath::kalman_scalar_update(P_, dx, idx_n, h_n, f.y(), sd * sd);
+    apply(dx);
+    // Still: y = mean w_m - bg = dbg (H = [0, I, 0, 0], R = sd^2 I).
     if (still) {
-        Eigen::Matrix<double, 3, kN> Hb = Eigen::Matrix<double, 3, kN>::Zero();
-        Hb.block<3, 3>(0, 3).setIdentity();
-        update<3>(w_mean - bg_, Hb, c_.still_bias_sd_radps * c_.still_bias_sd_radps);
+        const Vec3 y = w_mean - bg_;
+        const double r_var = c_.still_bias_sd_radps * c_.still_bias_sd_radps;
+        dx.setZero();
+        for (int j = 0; j < 3; ++j) {
+            const int idx[1] = {3 + j};
+            const double h[1] = {1.0};
+            navmath::kalman_scalar_update(P_, dx, idx, h, y(j), r_var);
+        }
+        apply(dx);
     }
-}
-
-template <int M>
-void AttitudeEkf::update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kN>& H, double r_var) {
-    const Eigen::Matrix<double, kN, M> PHt = P_ * H.transpose();
-    Eigen::Matrix<double, M, M> S = H * PHt;
-    S.diagonal().array() += r_var;
-    const Eigen::Matrix<double, kN, M> K = PHt * S.inverse();
-    apply(K * y);
-    // Joseph form keeps P symmetric and positive.
-    const MatP IKH = MatP::Identity() - K * H;
-    P_ = IKH * P_ * IKH.transpose() + r_var * K * K.transpose();
 }
 
 void AttitudeEkf::apply(const VecX& dx) {
@@ -207,17 +207,17 @@ void AttitudeEkf::on_mag(int64_t t_ns, const Vec3& m) {
     const double psi_mag = navmath::magnetic_heading(up_b, m) + c_.declination_deg * kDeg;
     const double psi = navmath::heading_of(q_), sin_psi = std::sin(psi), cos_psi = std::cos(psi);
     const double y = navmath::wrap_pi(psi_mag - psi - dev_(0) * sin_psi - dev_(1) * cos_psi);
-    Eigen::Matrix<double, 1, kN> H = Eigen::Matrix<double, 1, kN>::Zero();
-    H(0, 2) = -1.0;
-    if (c_.mag_deviation_sd_rad > 0) {
-        H(0, 9) = sin_psi;
-        H(0, 10) = cos_psi;
-    }
+    // H = [0, 0, -1, 0, ..., 0, sin psi, cos psi] (the deviation's entries 0
+    // when it is not estimated: its states then have no variance).
+    const bool deviation = c_.mag_deviation_sd_rad > 0;
+    const int idx[3] = {2, 9, 10};
+    const double h[3] = {-1.0, deviation ? sin_psi : 0.0, deviation ? cos_psi : 0.0};
+    const double r_var = c_.mag_heading_sd_rad * c_.mag_heading_sd_rad;
     // A field the gate lets through may still be disturbed (a magnet can
     // keep the strength and dip): heading innovations beyond mag_gate_chi2
     // are rejected, unless mag_max_rejections in a row say the heading is
     // what is wrong.
-    const double s2 = (H * P_ * H.transpose())(0, 0) + c_.mag_heading_sd_rad * c_.mag_heading_sd_rad;
+    const double s2 = navmath::kalman_innovation_variance(P_, idx, h, r_var);
     const bool outlier = y * y > c_.mag_gate_chi2 * s2;
     if (outlier && yaw_source_ == YawSource::magnetometer && ++mag_rejections_ < c_.mag_max_rejections) return;
     mag_rejections_ = 0;
@@ -229,7 +229,9 @@ void AttitudeEkf::on_mag(int64_t t_ns, const Vec3& m) {
         P_(2, 2) = c_.mag_heading_sd_rad * c_.mag_heading_sd_rad;
         yaw_source_ = YawSource::magnetometer;
     } else {
-        update<1>(Eigen::Matrix<double, 1, 1>(y), H, c_.mag_heading_sd_rad * c_.mag_heading_sd_rad);
+        VecX dx = VecX::Zero();
+        navmath::kalman_scalar_update(P_, dx, idx, h, y, r_var);
+        apply(dx);
     }
     mag_used_ = true;
     ++mag_updates_;

@@ -92,4 +92,49 @@ StepLengthFit fit_step_length_and_root(const std::vector<CalibrationWalk>& walks
     return f1.rms_relative_error <= f2.rms_relative_error ? f1 : f2;
 }
 
+std::vector<double> fit_linear_step_model(const std::vector<LinearCalibrationWalk>& walks) {
+    if (walks.empty()) throw std::invalid_argument("step length fit: no walk");
+    const size_t m = walks.front().basis_sums.size();
+    if (m == 0) throw std::invalid_argument("step length fit: no constant to fit");
+    // Normal equations of 1 = sum_j c_j x_wj, x_wj = G_wj / D_w.
+    std::vector<double> A(m * m, 0.0), rhs(m, 0.0);
+    for (size_t w = 0; w < walks.size(); ++w) {
+        if (walks[w].basis_sums.size() != m)
+            throw std::invalid_argument("step length fit: walk " + std::to_string(w) + " has another basis");
+        if (!(walks[w].distance_m > 0))
+            throw std::invalid_argument("step length fit: walk " + std::to_string(w) + " has no positive distance");
+        for (size_t i = 0; i < m; ++i) {
+            const double xi = walks[w].basis_sums[i] / walks[w].distance_m;
+            rhs[i] += xi;
+            for (size_t j = 0; j < m; ++j) A[i * m + j] += xi * walks[w].basis_sums[j] / walks[w].distance_m;
+        }
+    }
+    // Gaussian elimination with partial pivoting (m is 1 to 3).
+    double scale = 0.0;
+    for (size_t i = 0; i < m; ++i) scale = std::max(scale, std::abs(A[i * m + i]));
+    for (size_t col = 0; col < m; ++col) {
+        size_t pivot = col;
+        for (size_t r = col + 1; r < m; ++r)
+            if (std::abs(A[r * m + col]) > std::abs(A[pivot * m + col])) pivot = r;
+        if (!(std::abs(A[pivot * m + col]) > 1e-12 * scale))
+            throw std::invalid_argument("step length fit: the walks do not determine the constants");
+        if (pivot != col) {
+            for (size_t j = 0; j < m; ++j) std::swap(A[col * m + j], A[pivot * m + j]);
+            std::swap(rhs[col], rhs[pivot]);
+        }
+        for (size_t r = col + 1; r < m; ++r) {
+            const double f = A[r * m + col] / A[col * m + col];
+            for (size_t j = col; j < m; ++j) A[r * m + j] -= f * A[col * m + j];
+            rhs[r] -= f * rhs[col];
+        }
+    }
+    std::vector<double> c(m, 0.0);
+    for (size_t i = m; i-- > 0;) {
+        double v = rhs[i];
+        for (size_t j = i + 1; j < m; ++j) v -= A[i * m + j] * c[j];
+        c[i] = v / A[i * m + i];
+    }
+    return c;
+}
+
 }  // namespace pednav::pdr

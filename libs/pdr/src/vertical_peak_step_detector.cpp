@@ -34,6 +34,7 @@ int64_t ns_of(double s) { return static_cast<int64_t>(std::llround(s * 1e9)); }
 
 VerticalPeakStepDetector::VerticalPeakStepDetector(const VerticalPeakStepConfig& config, double max_rate_hz)
     : c_(checked(config)),
+      vertical_(config.gravity_time_constant_s),
       smoother_(config.smoothing_window_s, max_rate_hz),
       peaks_(2.0 * config.min_step_interval_s, max_rate_hz),
       altimeter_(config.baro),
@@ -54,7 +55,7 @@ void VerticalPeakStepDetector::reset() {
     peaks_.reset();
     altimeter_.reset();
     pushed_ = judged_ = 0;
-    has_gravity_ = false;
+    vertical_.reset();
     t_last_ns_ = 0;
     yaw_rad_ = 0;
     min_since_candidate_ = HUGE_VAL;
@@ -72,22 +73,9 @@ void VerticalPeakStepDetector::push_baro(int64_t t_ns, double pressure_pa) {
 }
 
 void VerticalPeakStepDetector::on_imu(int64_t t_ns, const double a[3], const double w[3]) {
-    const double dt = has_gravity_ ? static_cast<double>(t_ns - t_last_ns_) * 1e-9 : 0.0;
-    if (!has_gravity_) {
-        for (int i = 0; i < 3; ++i) g_lp_[i] = a[i];
-        has_gravity_ = true;
-    } else {
-        const double k = 1.0 - std::exp(-dt / c_.gravity_time_constant_s);
-        for (int i = 0; i < 3; ++i) g_lp_[i] += k * (a[i] - g_lp_[i]);
-    }
+    const double a_v = vertical_.push(t_ns, a);
     t_last_ns_ = t_ns;
-    const double g = std::sqrt(g_lp_[0] * g_lp_[0] + g_lp_[1] * g_lp_[1] + g_lp_[2] * g_lp_[2]);
-    double a_v = 0, w_up = 0;
-    if (g > 0) {
-        a_v = (a[0] * g_lp_[0] + a[1] * g_lp_[1] + a[2] * g_lp_[2]) / g - g;
-        w_up = (w[0] * g_lp_[0] + w[1] * g_lp_[1] + w[2] * g_lp_[2]) / g;
-    }
-    yaw_rad_ -= w_up * dt;  // counter-clockwise about up is a heading decrease
+    yaw_rad_ -= vertical_.along_vertical(w) * vertical_.dt_s();  // counter-clockwise about up is a heading decrease
     yaw_ring_[pushed_++ & yaw_mask_] = yaw_rad_;
     smoother_.push(t_ns, a_v, [this](int64_t t, double v) { on_filtered(t, v); });
 }

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/Dense>
 #include <pednav_navmath/angles.hpp>
+#include <pednav_navmath/kalman_update.hpp>
 
 namespace pednav::pdr_fusion {
 
@@ -51,26 +51,39 @@ void StepGnssEkf::predict_step(double model_length_m, double dpsi_rad, double fr
     const double s = std::sin(psi_mid), c = std::cos(psi_mid), l = x_(L);
     x_(E) += l * s;
     x_(N) += l * c;
-    // eq. (4.16) for E += L sin psi, N += L cos psi.
-    Mat F = Mat::Identity();
-    F(E, PSI) = l * c;
-    F(E, L) = s;
-    F(N, PSI) = -l * s;
-    F(N, L) = c;
-    P_ = F * P_ * F.transpose();
-    P_.diagonal().head<6>() += (Eigen::Matrix<double, 6, 1>() << sq(c_.position_sd_m), sq(c_.position_sd_m),
-                                sq(c_.speed_sd_mps), sq(c_.altitude_sd_m), sq(c_.heading_sd_rad),
-                                sq(c_.step_length_sd_m))
-                                   .finished();
+    // eq. (4.16) for E += L sin psi, N += L cos psi: F is the identity but
+    // for the rows of E and N, so P <- F P F^T changes only their rows and
+    // columns. With the rows r_E = F_E P and r_N = F_N P (of the P before):
+    // P'(E, j) = r_E(j) for j not E, N; P'(E, E) = r_E F_E^T, P'(E, N) =
+    // r_E F_N^T, P'(N, N) = r_N F_N^T.
+    const double fe_psi = l * c, fe_l = s, fn_psi = -l * s, fn_l = c;
+    double r_e[kStates], r_n[kStates];
+    for (int j = 0; j < kStates; ++j) {
+        r_e[j] = P_(E, j) + fe_psi * P_(PSI, j) + fe_l * P_(L, j);
+        r_n[j] = P_(N, j) + fn_psi * P_(PSI, j) + fn_l * P_(L, j);
+    }
+    const double p_ee = r_e[E] + fe_psi * r_e[PSI] + fe_l * r_e[L];
+    const double p_en = r_e[N] + fn_psi * r_e[PSI] + fn_l * r_e[L];
+    const double p_nn = r_n[N] + fn_psi * r_n[PSI] + fn_l * r_n[L];
+    for (int j = S; j < kStates; ++j) {
+        P_(E, j) = P_(j, E) = r_e[j];
+        P_(N, j) = P_(j, N) = r_n[j];
+    }
+    P_(E, E) = p_ee;
+    P_(E, N) = P_(N, E) = p_en;
+    P_(N, N) = p_nn;
+    P_(E, E) += sq(c_.position_sd_m);
+    P_(N, N) += sq(c_.position_sd_m);
+    P_(S, S) += sq(c_.speed_sd_mps);
+    P_(A, A) += sq(c_.altitude_sd_m);
+    P_(PSI, PSI) += sq(c_.heading_sd_rad);
+    P_(L, L) += sq(c_.step_length_sd_m);
     // eq. (4.22): S_INS = L f (the step length times the step frequency)
     // observes S; it is not a function of L in H, so the steps' own timing
     // does not move the length. The paper's L_INS (the model's length) is
     // the prediction's input above; applied again as an observation it
     // would pull what GNSS taught L back to the model during an outage.
-    Eigen::Matrix<double, 1, kStates> H = Eigen::Matrix<double, 1, kStates>::Zero();
-    H(0, S) = 1.0;
-    update<1>(Eigen::Matrix<double, 1, 1>(x_(L) * frequency_hz - x_(S)), H,
-              Eigen::Matrix<double, 1, 1>(sq(c_.model_speed_sd_mps)));
+    update_one(S, 1.0, x_(L) * frequency_hz - x_(S), sq(c_.model_speed_sd_mps));
 }
 
 void StepGnssEkf::turn(double dpsi_rad) { x_(PSI) = navmath::wrap_pi(x_(PSI) + dpsi_rad); }
@@ -88,22 +101,15 @@ void StepGnssEkf::forget_speed() {
     P_(S, S) = 1.0;
 }
 
-template <int M>
-double StepGnssEkf::nis(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kStates>& H,
-                        const Eigen::Matrix<double, M, M>& R, Eigen::Matrix<double, M, M>& S_out) const {
-    S_out = H * P_ * H.transpose() + R;
-    return y.dot(S_out.ldlt().solve(y));
-}
-
-template <int M>
-void StepGnssEkf::update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kStates>& H,
-                         const Eigen::Matrix<double, M, M>& R) {
-    const Eigen::Matrix<double, M, M> S_ = H * P_ * H.transpose() + R;
-    const Eigen::Matrix<double, kStates, M> K = P_ * H.transpose() * S_.inverse();
-    x_ += K * y;
+void StepGnssEkf::update_one(int i, double h, double y, double r) {
+    // One scalar observation y = h x_i + v (navmath/kalman_update.hpp:
+    // the Joseph form, expanded for one row, O(N^2)).
+    Vec dx = Vec::Zero();
+    const int idx[1] = {i};
+    const double val[1] = {h};
+    navmath::kalman_scalar_update(P_, dx, idx, val, y, r);
+    x_ += dx;
     x_(PSI) = navmath::wrap_pi(x_(PSI));
-    const Mat IKH = Mat::Identity() - K * H;
-    P_ = IKH * P_ * IKH.transpose() + K * R * K.transpose();  // Joseph form
 }
 
 void StepGnssEkf::split_sd(double sd_m, double& correlated_m, double& white_m) const {
@@ -143,21 +149,31 @@ FixResult StepGnssEkf::gnss_position(double e_m, double n_m, double sd_m, double
     const bool had_fix = has_fix_;
     decay_fix_error(t_s, sd_c);
     const double s = std::sin(x_(PSI)), c = std::cos(x_(PSI)), v = x_(S);
-    // h = [E + S dt sin psi + bE, N + S dt cos psi + bN]
-    Eigen::Matrix<double, 2, kStates> H = Eigen::Matrix<double, 2, kStates>::Zero();
-    H(0, E) = 1.0;
-    H(0, S) = dt * s;
-    H(0, PSI) = v * dt * c;
-    H(1, N) = 1.0;
-    H(1, S) = dt * c;
-    H(1, PSI) = -v * dt * s;
-    H(0, BE) = H(1, BN) = 1.0;
-    const Eigen::Vector2d y(e_m - (x_(E) + v * dt * s + x_(BE)), n_m - (x_(N) + v * dt * c + x_(BN)));
-    const Eigen::Matrix2d R = Eigen::Matrix2d::Identity() * sq(sd_w);
-    Eigen::Matrix2d S_;
-    r.nis = nis<2>(y, H, R, S_);
+    // h = [E + S dt sin psi + bE, N + S dt cos psi + bN]: its two rows by
+    // their nonzero entries (the column of bE, bN is absent with tau = 0:
+    // those states stay 0 with no variance).
+    const int idx_e[4] = {E, S, PSI, BE}, idx_n[4] = {N, S, PSI, BN};
+    const double h_e[4] = {1.0, dt * s, v * dt * c, 1.0}, h_n[4] = {1.0, dt * c, -v * dt * s, 1.0};
+    const double y_e = e_m - (x_(E) + v * dt * s + x_(BE)), y_n = n_m - (x_(N) + v * dt * c + x_(BN));
+    const double r_var = sq(sd_w);
+    // The gate: y^T S^-1 y with S = H P H^T + R (2 x 2).
+    double s_ee = r_var, s_en = 0.0, s_nn = r_var;
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) {
+            s_ee += h_e[a] * P_(idx_e[a], idx_e[b]) * h_e[b];
+            s_en += h_e[a] * P_(idx_e[a], idx_n[b]) * h_n[b];
+            s_nn += h_n[a] * P_(idx_n[a], idx_n[b]) * h_n[b];
+        }
+    const double det = s_ee * s_nn - s_en * s_en;
+    r.nis = det > 0 ? (s_nn * y_e * y_e - 2.0 * s_en * y_e * y_n + s_ee * y_n * y_n) / det : INFINITY;
     if (r.nis <= c_.gate_chi2) {
-        update<2>(y, H, R);
+        // R is diagonal: the two components one after the other (the same
+        // posterior as the joint update).
+        Vec dx = Vec::Zero();
+        navmath::kalman_scalar_update(P_, dx, idx_e, h_e, y_e, r_var);
+        navmath::kalman_scalar_update(P_, dx, idx_n, h_n, y_n, r_var);
+        x_ += dx;
+        x_(PSI) = navmath::wrap_pi(x_(PSI));
         rejections_ = 0;
         r.accepted = true;
         return r;
@@ -170,6 +186,7 @@ FixResult StepGnssEkf::gnss_position(double e_m, double n_m, double sd_m, double
     // Rejected. Many in a row that agree with each other: the track is lost.
     // (Consecutive innovations that change little: the fixes agree with
     // each other and with the steps between them, the track is off.)
+    const Eigen::Vector2d y(y_e, y_n);
     if (rejections_ == 0) rejected_spread_ = 0;
     else rejected_spread_ = std::max(rejected_spread_, (y - rejected_last_).norm());
     rejected_last_ = y;
@@ -189,32 +206,20 @@ bool StepGnssEkf::gnss_velocity(double ve, double vn, double sd_mps) {
     // Walking: the speed is the step length times the step frequency, so a
     // GNSS speed observes L (the model's error for this walker); standing,
     // it observes S.
-    Eigen::Matrix<double, 1, kStates> H = Eigen::Matrix<double, 1, kStates>::Zero();
-    double predicted = x_(S);
-    if (!stopped_ && frequency_hz_ > 0) {
-        H(0, L) = frequency_hz_;
-        predicted = x_(L) * frequency_hz_;
-    } else {
-        H(0, S) = 1.0;
-    }
-    const Eigen::Matrix<double, 1, 1> y(speed - predicted), R(sq(sd));
-    Eigen::Matrix<double, 1, 1> S_;
-    if (nis<1>(y, H, R, S_) > c_.gate_chi2) return false;
-    update<1>(y, H, R);
+    const bool walking = !stopped_ && frequency_hz_ > 0;
+    const int i = walking ? L : S;
+    const double h = walking ? frequency_hz_ : 1.0;
+    const double y = speed - h * x_(i), r_var = sq(sd);
+    if (sq(y) > c_.gate_chi2 * (h * P_(i, i) * h + r_var)) return false;
+    update_one(i, h, y, r_var);
     if (speed >= c_.gnss_course_min_speed_mps && c_.gnss_course_min_speed_mps > 0) {
-        H.setZero();
-        H(0, PSI) = 1.0;
-        const Eigen::Matrix<double, 1, 1> yc(navmath::wrap_pi(std::atan2(ve, vn) - x_(PSI))), Rc(sq(sd / speed));
-        if (nis<1>(yc, H, Rc, S_) <= c_.gate_chi2) update<1>(yc, H, Rc);
+        const double yc = navmath::wrap_pi(std::atan2(ve, vn) - x_(PSI)), rc = sq(sd / speed);
+        if (sq(yc) <= c_.gate_chi2 * (P_(PSI, PSI) + rc)) update_one(PSI, 1.0, yc, rc);
     }
     return true;
 }
 
-void StepGnssEkf::altitude(double a_m, double sd_m) {
-    Eigen::Matrix<double, 1, kStates> H = Eigen::Matrix<double, 1, kStates>::Zero();
-    H(0, A) = 1.0;
-    update<1>(Eigen::Matrix<double, 1, 1>(a_m - x_(A)), H, Eigen::Matrix<double, 1, 1>(sq(sd_m)));
-}
+void StepGnssEkf::altitude(double a_m, double sd_m) { update_one(A, 1.0, a_m - x_(A), sq(sd_m)); }
 
 void StepGnssEkf::set_position(double e_m, double n_m, double a_m) {
     x_(E) = e_m;

@@ -367,6 +367,12 @@ Truth read_ipol_steps(const std::string& path, double rate_hz, double leg_length
     return t;
 }
 
+double read_ipol_height_m(const std::string& path) {
+    const nlohmann::json j = read_json(path);
+    const auto it = j.find("Height");
+    return it != j.end() && it->is_number() ? it->get<double>() / 100.0 : NAN;
+}
+
 Truth read_truth(const std::string& path, const std::string& kind_in) {
     std::string kind = kind_in;
     if (kind.rfind("loop", 0) == 0) {

@@ -12,13 +12,28 @@
 #include <pednav_foot_eval/runs.hpp>
 #include <pednav_foot_eval/scores.hpp>
 #include <pednav_navmath/angles.hpp>
+#include <pednav_io/sensor_log.hpp>
+#include <pednav_pdr/inverted_pendulum.hpp>
 #include <pednav_pdr/step_length_model.hpp>
+#include <pednav_pdr/vertical_acceleration.hpp>
 
 namespace pednav::waist_eval {
 
 namespace {
 double hypot2(const double* a, const double* b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
 double t_of(int64_t t_ns) { return static_cast<double>(t_ns) * 1e-9; }
+
+// The step detector's gravity_time_constant_s in a config.
+double gravity_time_constant_s(const std::string& config_json) {
+    const nlohmann::json doc = nlohmann::json::parse(config_json);
+    for (const auto& [name, pipeline] : doc.at("pipelines").items()) {
+        (void)name;
+        const auto it = pipeline.find("step_detector");
+        if (it != pipeline.end() && it->contains("params") && it->at("params").contains("gravity_time_constant_s"))
+            return it->at("params").at("gravity_time_constant_s").get<double>();
+    }
+    throw std::runtime_error("the waist config has no step_detector gravity_time_constant_s");
+}
 
 // The track's horizontal position at t: linear between the outputs around
 // it (the start point before the first, the last output after it).
@@ -55,10 +70,25 @@ IpolWaistRun run_ipol_waist(const std::string& data_dir, const std::string& tria
     const eval::Truth truth = eval::read_ipol_steps(walk.truth_path, eval::kIpolRateHz, eval::kIpolLegM, "both");
     if (truth.legs.size() != 2 || truth.step_times_s.empty())
         throw std::runtime_error(walk.truth_path + ": expected footsteps and an out and a back leg");
-    const ReplayResult r = foot_eval::run_recording(walk.input, config_json, plugin_dirs);
+    const io::SensorLog log = io::read_sensor_file(walk.input);
+    const ReplayResult r = foot_eval::run_log(log, config_json, plugin_dirs, walk.input);
     if (r.positions.empty()) throw std::runtime_error(walk.input + ": no positions");
     IpolWaistRun run;
     run.trial = trial;
+    run.height_m = eval::read_ipol_height_m(walk.truth_path);
+    // The vertical acceleration the step detector sees, for the pelvis' rise.
+    std::vector<int64_t> t_v;
+    std::vector<double> a_v;
+    pdr::VerticalAcceleration vertical(gravity_time_constant_s(config_json));
+    for (const pn_imu_t& s : log.imu) {
+        t_v.push_back(s.header.t_ns);
+        a_v.push_back(vertical.push(s.header.t_ns, s.accel_mps2));
+    }
+    const auto pelvis_rise = [&](int64_t t0_ns, int64_t t1_ns) {
+        const size_t i0 = static_cast<size_t>(std::lower_bound(t_v.begin(), t_v.end(), t0_ns) - t_v.begin());
+        const size_t i1 = static_cast<size_t>(std::upper_bound(t_v.begin(), t_v.end(), t1_ns) - t_v.begin());
+        return i1 > i0 ? pdr::pelvis_rise_m(t_v.data() + i0, a_v.data() + i0, i1 - i0) : 0.0;
+    };
     run.footsteps = truth.step_count;
     const double t0 = truth.step_times_s.front() - 0.3, t1 = truth.step_times_s.back() + 0.3;
     for (const pn_step_t& s : r.steps)
@@ -78,9 +108,12 @@ IpolWaistRun run_ipol_waist(const std::string& data_dir, const std::string& tria
         std::vector<double>& ranges = leg == 0 ? run.out_ranges_mps2 : run.back_ranges_mps2;
         for (const pn_stride_t& s : r.strides)
             if (t_of(s.header.t_ns) > l.t0_s && t_of(s.header.t_ns) <= l.t1_s) path += s.length_m;
+        std::vector<IpolStep>& steps = leg == 0 ? run.out_steps : run.back_steps;
         for (const pn_step_t& s : r.steps)
-            if (s.motion_mode != PN_STEP_MODE_STATIC && t_of(s.header.t_ns) > l.t0_s && t_of(s.header.t_ns) <= l.t1_s)
+            if (s.motion_mode != PN_STEP_MODE_STATIC && t_of(s.header.t_ns) > l.t0_s && t_of(s.header.t_ns) <= l.t1_s) {
                 ranges.push_back(s.accel_peak_to_peak_mps2);
+                steps.push_back({s.accel_peak_to_peak_mps2, s.frequency_hz, pelvis_rise(s.t_start_ns, s.header.t_ns)});
+            }
         (leg == 0 ? run.leg_out_m : run.leg_back_m) = chord;
         (leg == 0 ? run.out_path_ratio : run.back_path_ratio) = chord > 0 ? path / chord : 1.0;
     }
@@ -119,23 +152,30 @@ std::string with_step_model(const std::string& config_json, double k, double b, 
     return doc.dump();
 }
 
-std::vector<LosoLeg> leave_one_subject_out(const std::string& data_dir, const std::string& waist_config_json,
-                                           const std::string& foot_config_json,
-                                           const std::vector<std::string>& plugin_dirs, double b) {
-    struct Trial {
-        std::string name, subject;
-        IpolWaistRun run;
-        FootLegs foot;
-    };
-    std::vector<Trial> trials;
+std::vector<IpolTrial> ipol_trials(const std::string& data_dir, const std::string& waist_config_json,
+                                   const std::string& foot_config_json, const std::vector<std::string>& plugin_dirs) {
+    std::vector<IpolTrial> trials;
     for (const std::string& t : ipol_waist_trials())
         trials.push_back({t, ipol_subject(t), run_ipol_waist(data_dir, t, waist_config_json, plugin_dirs),
                           ipol_foot_legs(data_dir, t, foot_config_json, plugin_dirs)});
+    return trials;
+}
+
+std::vector<LosoLeg> leave_one_subject_out(const std::string& data_dir, const std::string& waist_config_json,
+                                           const std::string& foot_config_json,
+                                           const std::vector<std::string>& plugin_dirs, double b) {
+    return leave_one_subject_out(ipol_trials(data_dir, waist_config_json, foot_config_json, plugin_dirs), data_dir,
+                                 waist_config_json, plugin_dirs, b);
+}
+
+std::vector<LosoLeg> leave_one_subject_out(const std::vector<IpolTrial>& trials, const std::string& data_dir,
+                                           const std::string& waist_config_json,
+                                           const std::vector<std::string>& plugin_dirs, double b) {
     std::map<std::string, double> k_of;
-    for (const Trial& held : trials) {
+    for (const IpolTrial& held : trials) {
         if (k_of.count(held.subject)) continue;
         std::vector<pdr::CalibrationWalk> walks;
-        for (const Trial& t : trials) {
+        for (const IpolTrial& t : trials) {
             if (t.subject == held.subject) continue;
             // The steps of a leg cover the waist's path over it, a little
             // longer than its chord (the pelvis' yaw swing): the foot's chord
@@ -146,12 +186,12 @@ std::vector<LosoLeg> leave_one_subject_out(const std::string& data_dir, const st
         k_of[held.subject] = pdr::fit_step_length(walks, b, false, 0.0).model.k;
     }
     std::vector<LosoLeg> legs;
-    for (const Trial& t : trials) {
+    for (const IpolTrial& t : trials) {
         const double k = k_of.at(t.subject);
-        const IpolWaistRun run = run_ipol_waist(data_dir, t.name, with_step_model(waist_config_json, k, b, 0.0),
+        const IpolWaistRun run = run_ipol_waist(data_dir, t.trial, with_step_model(waist_config_json, k, b, 0.0),
                                                 plugin_dirs);
-        legs.push_back({t.name, t.subject, true, run.leg_out_m, t.foot.out_m, k});
-        legs.push_back({t.name, t.subject, false, run.leg_back_m, t.foot.back_m, k});
+        legs.push_back({t.trial, t.subject, true, run.leg_out_m, t.foot.out_m, k});
+        legs.push_back({t.trial, t.subject, false, run.leg_back_m, t.foot.back_m, k});
     }
     return legs;
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <pednav_geodesy/enu.hpp>
 #include <pednav_sim/route.hpp>
 #include <pednav_sim/simulate.hpp>
 
@@ -55,6 +56,8 @@ std::vector<OutputError> output_errors(const ReplayResult& r, const sim::SimOutp
         e.walked_m = walked[i];
         e.true_e_m = out.truth[i].pos_enu_m[0];
         e.true_n_m = out.truth[i].pos_enu_m[1];
+        e.var_e_m2 = p.cov_enu_m2[0];
+        e.var_n_m2 = p.cov_enu_m2[4];
         errors.push_back(e);
     }
     return errors;
@@ -141,6 +144,31 @@ double mean_h_accuracy_m(const std::vector<pn_gnss_t>& fixes) {
     double s = 0;
     for (const pn_gnss_t& g : fixes) s += g.h_accuracy_m;
     return fixes.empty() ? NAN : s / static_cast<double>(fixes.size());
+}
+
+double mean_nees_per_axis_of(const std::vector<OutputError>& errors, int source) {
+    double s = 0;
+    int n = 0;
+    for (const OutputError& e : errors)
+        if (e.source == source && e.var_e_m2 > 0 && e.var_n_m2 > 0)
+            s += e.err_e_m * e.err_e_m / e.var_e_m2 + e.err_n_m * e.err_n_m / e.var_n_m2, n += 2;
+    return n ? s / n : NAN;
+}
+
+double mean_fix_error_m(const sim::SimOutput& out, const sim::Route& route, double t0_s, double t1_s) {
+    const geodesy::GeodeticPoint origin{route.origin_lat_deg, route.origin_lon_deg, route.origin_height_m};
+    double s = 0;
+    int n = 0;
+    for (const pn_gnss_t& g : out.gnss) {
+        const double t_s = static_cast<double>(g.header.t_ns) * 1e-9;
+        if (t_s < t0_s || t_s > t1_s) continue;
+        ++n;
+        double enu[3];
+        geodesy::geodetic_to_enu(origin, g.lat_deg, g.lon_deg, g.height_m, enu);
+        const sim::TruthSample& t = out.truth[truth_index(out, g.header.t_ns)];
+        s += std::hypot(enu[0] - t.pos_enu_m[0], enu[1] - t.pos_enu_m[1]);
+    }
+    return n ? s / n : NAN;
 }
 
 sim::Route block_laps_route() {

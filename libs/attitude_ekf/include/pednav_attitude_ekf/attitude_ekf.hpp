@@ -167,8 +167,6 @@ private:
     void propagate(const Vec3& w_radps, double dt);
     void window_sample(const Vec3& a, const Vec3& w, double dt);
     void end_window();
-    template <int M>
-    void update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kStates>& H, double r_var);
     void apply(const VecX& dx);
     void reset_covariance();
     void rotate_yaw(double delta_heading_rad);

@@ -55,4 +55,20 @@ StepLengthFit fit_step_length(const std::vector<CalibrationWalk>& walks, double 
 StepLengthFit fit_step_length_and_root(const std::vector<CalibrationWalk>& walks, double b_min, double b_max,
                                        bool fit_beta, double beta_m);
 
+// A step-length model linear in its constants, L = sum_j c_j g_j, with g_j
+// what each step gives (r^(1/b), 1, the step frequency, the inverted
+// pendulum's 2 sqrt(2 l h - h^2), ...). A walk of known length: the sums
+// over its steps of each g_j.
+struct LinearCalibrationWalk {
+    std::vector<double> basis_sums;
+    double distance_m;
+};
+
+// The constants c_j minimising the rms relative error of the walks' summed
+// lengths, sum_j c_j G_wj against D_w (least squares on
+// (sum_j c_j G_wj - D_w) / D_w, as fit_step_length). Throws
+// std::invalid_argument for no walk, walks of different basis sizes, a
+// distance that is not positive, or constants the walks do not determine.
+std::vector<double> fit_linear_step_model(const std::vector<LinearCalibrationWalk>& walks);
+
 }  // namespace pednav::pdr

@@ -4,10 +4,10 @@
 // 3.3, Table 1).
 //
 // Vertical acceleration after gravity compensation, whatever the sensor's
-// tilt: the gravity direction u is the low-passed specific force (time
-// constant gravity_time_constant_s; its mean over a few steps is gravity),
-// and a_v = f . u - |g_lp| (|g_lp| also absorbs the accelerometer's scale
-// error). a_v is smoothed by a centred moving average (smoothing_window_s,
+// tilt (vertical_acceleration.hpp): the gravity direction u is the
+// low-passed specific force (time constant gravity_time_constant_s; its mean
+// over a few steps is gravity), and a_v = f . u - |g_lp| (|g_lp| also
+// absorbs the accelerometer's scale error). a_v is smoothed by a centred moving average (smoothing_window_s,
 // no phase lag) and its local maxima over +-min_step_interval_s are the
 // candidate peaks. A candidate is a step when
 //   C1 (eq. 3.2): its maximum is above accel_max_threshold_mps2 and the
@@ -44,6 +44,7 @@
 #include <vector>
 
 #include <pednav_barometry/barometric_altimeter.hpp>
+#include <pednav_pdr/vertical_acceleration.hpp>
 #include <pednav_signal/centred_moving_average.hpp>
 #include <pednav_signal/centred_peak_finder.hpp>
 
@@ -148,6 +149,7 @@ private:
 
     VerticalPeakStepConfig c_;
     int64_t latency_ns_;
+    VerticalAcceleration vertical_;
     signal::CentredMovingAverage smoother_;
     signal::CentredPeakFinder peaks_;
     barometry::BarometricAltimeter altimeter_;
@@ -158,8 +160,6 @@ private:
     uint64_t yaw_mask_;
     uint64_t pushed_ = 0, judged_ = 0;
 
-    bool has_gravity_ = false;
-    double g_lp_[3] = {0, 0, 0};
     int64_t t_last_ns_ = 0;
     double yaw_rad_ = 0;
 

@@ -146,13 +146,8 @@ public:
     int consecutive_rejections() const { return rejections_; }
 
 private:
-    template <int M>
-    double nis(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kStates>& H,
-               const Eigen::Matrix<double, M, M>& R, Eigen::Matrix<double, M, M>& S_out) const;
-    template <int M>
-    void update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kStates>& H,
-                const Eigen::Matrix<double, M, M>& R);
-
+    // One scalar observation y = h x_i + v, var r (y the innovation).
+    void update_one(int i, double h, double y, double r);
     void forget_speed();
     // The fix's sd per axis split into its correlated and white parts.
     void split_sd(double sd_m, double& correlated_m, double& white_m) const;

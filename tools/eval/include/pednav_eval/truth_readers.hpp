@@ -59,6 +59,10 @@ Truth make_loop_truth(double length_m = NAN);
 Truth read_ipol_steps(const std::string& json_path, double rate_hz = 100.0, double leg_length_m = 10.0,
                       const std::string& feet = "both", bool whole_recording = false);
 
+// The subject's height in the same file ("Height", cm), m; NAN when the file
+// has none (subject 10's is NaN).
+double read_ipol_height_m(const std::string& json_path);
+
 // By kind name: "sim", "koroglu", "humolire", "ipin", "loop" (or "loop:LENGTH_M"),
 // "ipol"; "auto" guesses from the path.
 Truth read_truth(const std::string& path, const std::string& kind = "auto");

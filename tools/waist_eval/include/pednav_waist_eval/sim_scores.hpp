@@ -4,6 +4,7 @@
 // the steps' motion modes against the route's stairs.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,7 @@ struct OutputError {
     int source = 0;      // PN_POSITION_SOURCE_*
     double walked_m = 0; // true horizontal distance walked up to t
     double true_e_m = 0, true_n_m = 0;  // the true position at t
+    double var_e_m2 = 0, var_n_m2 = 0;  // the output's own variances (cov_enu_m2)
 };
 std::vector<OutputError> output_errors(const ReplayResult& r, const sim::SimOutput& out);
 
@@ -68,7 +70,14 @@ double true_step_length_m(const sim::SimOutput& out, double t0_s, double t1_s);
 
 // Mean horizontal error of the outputs of `source`, and how many there are.
 double mean_error_of(const std::vector<OutputError>& errors, int source, int* count);
+// The outputs of `source`: mean of err_e^2 / var_e and err_n^2 / var_n (1 when
+// the output's covariance is the size of its error: a consistent filter).
+double mean_nees_per_axis_of(const std::vector<OutputError>& errors, int source);
 double mean_h_accuracy_m(const std::vector<pn_gnss_t>& fixes);
+// Mean horizontal error of the fixes themselves against the truth at their
+// time (in the route's ENU frame), of the fixes in [t0_s, t1_s].
+double mean_fix_error_m(const sim::SimOutput& out, const sim::Route& route, double t0_s = -HUGE_VAL,
+                        double t1_s = HUGE_VAL);
 
 // Two laps of a 100 m x 60 m block outdoors (640 m, 8 turns): the long walk
 // the 60 s GNSS outage is cut from (fixes of 300 to 360 s removed).
