@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
 // Track, geo-track and step CSVs, a row at a time or from whole vectors.
-#include <cstdio>
 #include <stdexcept>
 
 #include "pednav_io/writers.hpp"
@@ -16,11 +15,13 @@ using detail::kRadToDeg;
 
 namespace {
 
-std::string floor_text(const pn_position_t& p) {
-    char floor[16] = "";
-    if (has_floor(p)) std::snprintf(floor, sizeof floor, "%d", p.floor);
-    return floor;
+// The floor column: the index, or nothing when the position has none.
+void put_floor(detail::OutFile& out, const pn_position_t& p) {
+    if (has_floor(p)) out.integer(p.floor);
 }
+
+// Seconds with nanosecond digits ("%.9f" of the time).
+void put_time(detail::OutFile& out, int64_t t_ns) { out.fixed(static_cast<double>(t_ns) * 1e-9, 9); }
 
 }  // namespace
 
@@ -28,22 +29,34 @@ RowWriter::RowWriter(const std::string& path) : out_(std::make_unique<detail::Ou
 RowWriter::~RowWriter() = default;
 void RowWriter::flush() { out_->flush(); }
 void RowWriter::close() { out_->close(); }
-std::FILE* RowWriter::file() { return out_->get(); }
+detail::OutFile& RowWriter::out() { return *out_; }
 
 TrackCsvWriter::TrackCsvWriter(const std::string& path) : RowWriter(path) {
-    std::fprintf(file(), "t,x,y,z,heading_deg,floor,cov_xx,cov_xy,cov_yy,cov_zz\n");
+    out().text("t,x,y,z,heading_deg,floor,cov_xx,cov_xy,cov_yy,cov_zz\n");
 }
 
 void TrackCsvWriter::add(const pn_position_t& p) {
-    std::fprintf(file(), "%.9f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n",
-                 static_cast<double>(p.header.t_ns) * 1e-9, p.pos_enu_m[0], p.pos_enu_m[1], p.pos_enu_m[2],
-                 heading_deg(p.heading_rad), floor_text(p).c_str(), p.cov_enu_m2[0], p.cov_enu_m2[1],
-                 p.cov_enu_m2[4], p.cov_enu_m2[8]);
+    // "%.9f,%.6f,%.6f,%.6f,%.4f,%d,%.9g,%.9g,%.9g,%.9g\n", the floor empty when there is none.
+    detail::OutFile& o = out();
+    put_time(o, p.header.t_ns);
+    for (double v : p.pos_enu_m) {
+        o.put(',');
+        o.fixed(v, 6);
+    }
+    o.put(',');
+    o.fixed(heading_deg(p.heading_rad), 4);
+    o.put(',');
+    put_floor(o, p);
+    for (int i : {0, 1, 4, 8}) {  // xx, xy, yy, zz
+        o.put(',');
+        o.general(p.cov_enu_m2[i], 9);
+    }
+    o.put('\n');
 }
 
 GeoTrackCsvWriter::GeoTrackCsvWriter(const std::string& path, const Origin& origin)
     : RowWriter((check_origin(path, origin), path)), origin_(origin) {
-    std::fprintf(file(), "t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m\n");
+    out().text("t,lat_deg,lon_deg,height_m,heading_deg,floor,source,h_sigma_m\n");
 }
 
 void GeoTrackCsvWriter::check_origin(const std::string& path, const Origin& origin) {
@@ -56,23 +69,54 @@ void GeoTrackCsvWriter::check_origin(const std::string& path, const Origin& orig
 void GeoTrackCsvWriter::add(const pn_position_t& p) {
     double lat = 0, lon = 0, h = 0;
     geodesy::enu_to_geodetic(origin_, p.pos_enu_m, &lat, &lon, &h);
-    std::fprintf(file(), "%.9f,%.10f,%.10f,%.4f,%.4f,%s,%s,%.4g\n", static_cast<double>(p.header.t_ns) * 1e-9,
-                 lat, lon, h, heading_deg(p.heading_rad), floor_text(p).c_str(),
-                 position_source_name(p.source), h_sigma_m(p));
+    // "%.9f,%.10f,%.10f,%.4f,%.4f,%d,%s,%.4g\n", the floor empty when there is none.
+    detail::OutFile& o = out();
+    put_time(o, p.header.t_ns);
+    o.put(',');
+    o.fixed(lat, 10);
+    o.put(',');
+    o.fixed(lon, 10);
+    o.put(',');
+    o.fixed(h, 4);
+    o.put(',');
+    o.fixed(heading_deg(p.heading_rad), 4);
+    o.put(',');
+    put_floor(o, p);
+    o.put(',');
+    o.text(position_source_name(p.source));
+    o.put(',');
+    o.general(h_sigma_m(p), 4);
+    o.put('\n');
 }
 
 StepsCsvWriter::StepsCsvWriter(const std::string& path) : RowWriter(path) {
-    std::fprintf(
-        file(),
+    out().text(
         "index,t_start,t_end,dx,dy,dz,length_m,heading_change_deg,class,cov_xx,cov_xy,cov_yy,cov_zz\n");
 }
 
 void StepsCsvWriter::add(const pn_stride_t& s) {
-    std::fprintf(file(), "%d,%.9f,%.9f,%.6f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n", s.index,
-                 static_cast<double>(s.t_start_ns) * 1e-9, static_cast<double>(s.header.t_ns) * 1e-9,
-                 s.displacement_enu_m[0], s.displacement_enu_m[1], s.displacement_enu_m[2], s.length_m,
-                 s.heading_change_rad * kRadToDeg, class_name(s.stride_class), s.cov_displacement_m2[0],
-                 s.cov_displacement_m2[1], s.cov_displacement_m2[4], s.cov_displacement_m2[8]);
+    // "%d,%.9f,%.9f,%.6f,%.6f,%.6f,%.6f,%.4f,%s,%.9g,%.9g,%.9g,%.9g\n"
+    detail::OutFile& o = out();
+    o.integer(s.index);
+    o.put(',');
+    put_time(o, s.t_start_ns);
+    o.put(',');
+    put_time(o, s.header.t_ns);
+    for (double v : s.displacement_enu_m) {
+        o.put(',');
+        o.fixed(v, 6);
+    }
+    o.put(',');
+    o.fixed(s.length_m, 6);
+    o.put(',');
+    o.fixed(s.heading_change_rad * kRadToDeg, 4);
+    o.put(',');
+    o.text(class_name(s.stride_class));
+    for (int i : {0, 1, 4, 8}) {
+        o.put(',');
+        o.general(s.cov_displacement_m2[i], 9);
+    }
+    o.put('\n');
 }
 
 void write_track_csv(const std::string& path, const std::vector<pn_position_t>& positions) {

@@ -44,7 +44,7 @@ public:
     void close();
 
 protected:
-    std::FILE* file();
+    detail::OutFile& out();
 
 private:
     std::unique_ptr<detail::OutFile> out_;
