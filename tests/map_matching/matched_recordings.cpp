@@ -103,43 +103,55 @@ MatchedRecordingScore run_humolire_walk(const std::string& data_dir, const std::
 
 namespace pednav::test {
 
-MatchedRecordingScore run_biba_route(const std::string& data_dir, const std::string& route,
-                                     const std::string& preset_path, double heading_deg,
-                                     const std::string& plugin_dir, const std::string& work_dir) {
+BibaScore run_biba_route(const std::string& data_dir, const BibaRun& run, const std::string& preset_path,
+                         const std::string& plugin_dir, const std::string& work_dir) {
     const std::string dir = data_dir + "/biba-chest-xsens/map/";
     auto file = [&](const char* name) { return indoor_map::SourceFile{dir + name, read_text(dir + name)}; };
     const indoor_map::RairyuuMapFiles files{file("core.txt"), file("node.txt"), file("link.txt"),
                                             file("polygon.txt"), file("arrow.txt")};
-    const std::string document = indoor_map::rairyuu_to_geojson(files, {});
+    indoor_map::MapConversion conversion;
+    conversion.scale_m_per_px = run.scale_m_per_px;
+    const std::string document = indoor_map::rairyuu_to_geojson(files, conversion);
     const indoor_map::Map map = indoor_map::read_geojson_map(document, std::nullopt);
-    const std::string map_path = work_dir + "/biba-" + route + ".geojson";
+    const std::string map_path = work_dir + "/biba-" + run.route + ".geojson";
     std::ofstream(map_path) << document;
     const std::string preset = read_text(preset_path);
     const std::string mount = nlohmann::json::parse(preset).at("mount");
-    const io::SensorLog log = io::read_sensor_file(data_dir + "/biba-chest-xsens/" + route + ".txt");
+    const io::SensorLog log = io::read_sensor_file(data_dir + "/biba-chest-xsens/" + run.route + ".txt");
     const io::StreamInfo* accel = log.stream("accel");
     ReplayOptions o;
     o.plugin_dirs = {plugin_dir};
-    o.heading_deg = heading_deg;
+    o.heading_deg = run.heading_deg;
+    o.start_enu_m[0] = run.start_enu_m[0];
+    o.start_enu_m[1] = run.start_enu_m[1];
     o.config_json = eval::patched_config(
         preset, {{"imu_rate_hz", accel ? accel->median_rate_hz : 0.0},
                  {"pipelines", {{mount, {{"map_matcher", {{"plugin", "org.pednav.map.particle_filter"}}}}}}},
                  {"map", {{"path", map_path}, {"format", "pednav.map/1"}}}});
     const ReplayResult r = replay(o, io::merged_records(log));
-    if (!r.error.empty()) throw std::runtime_error(route + ": " + r.error);
-    MatchedRecordingScore s;
+    if (!r.error.empty()) throw std::runtime_error(run.route + ": " + r.error);
+    BibaScore b;
+    MatchedRecordingScore& s = b.matched;
     std::vector<indoor_map::Point2> points;
     std::vector<int> floors;
     s.min_live = UINT32_MAX;
     for (const pn_position_t& p : r.positions) {
+        if (!points.empty())
+            b.distance_m +=
+                std::hypot(p.pos_enu_m[0] - points.back().e_m, p.pos_enu_m[1] - points.back().n_m);
         points.push_back({p.pos_enu_m[0], p.pos_enu_m[1]});
         floors.push_back(p.floor);
         s.recoveries = p.recoveries;
-        if (p.header.flags & PN_POSITION_FLAG_HAS_PARTICLES) s.min_live = std::min(s.min_live, p.live_particles);
+        if (p.header.flags & PN_POSITION_FLAG_HAS_PARTICLES)
+            s.min_live = std::min(s.min_live, p.live_particles);
+    }
+    if (!points.empty()) {
+        b.end_enu_m[0] = points.back().e_m;
+        b.end_enu_m[1] = points.back().n_m;
     }
     s.crossings = static_cast<int>(indoor_map::wall_crossings(map, points, floors).size());
     s.positions = r.positions.size();
-    return s;
+    return b;
 }
 
 }  // namespace pednav::test

@@ -32,11 +32,23 @@ MatchedRecordingScore run_humolire_walk(const std::string& data_dir, const std::
 
 namespace pednav::test {
 
-// biba-chest-xsens/<route>.txt through `preset_path` with the map matcher
-// on map/ converted by rairyuu_to_geojson ((0, 0) at core.txt's start point),
-// started there with heading_deg. No landmarks: crossings and particles only.
-MatchedRecordingScore run_biba_route(const std::string& data_dir, const std::string& route,
-                                     const std::string& preset_path, double heading_deg,
-                                     const std::string& plugin_dir, const std::string& work_dir);
+// How a biba-chest-xsens route is run: map/ converted by rairyuu_to_geojson
+// at `scale_m_per_px` ((0, 0) at core.txt's start point), the route started
+// at `start_enu_m` with `heading_deg`.
+struct BibaRun {
+    std::string route;  // "rita_to_kar" or "kar_to_rita"
+    double scale_m_per_px = 0.0;
+    double start_enu_m[2] = {0.0, 0.0};
+    double heading_deg = 0.0;
+};
+
+struct BibaScore {
+    MatchedRecordingScore matched;     // no landmarks: crossings and particles only
+    double end_enu_m[2] = {0.0, 0.0};  // the last output
+    double distance_m = 0.0;           // along the output track
+};
+
+BibaScore run_biba_route(const std::string& data_dir, const BibaRun& run, const std::string& preset_path,
+                         const std::string& plugin_dir, const std::string& work_dir);
 
 }  // namespace pednav::test

@@ -21,7 +21,8 @@ namespace cli = pednav::cli;
 
 constexpr const char* kUsage =
     "usage: pednav map check MAP [--start E,N[,FLOOR]] [--clearance M] [--origin lat,lon,height]\n"
-    "       pednav map convert --from humolire|biba SOURCE --out MAP [--start X,Y] [--origin lat,lon,height]\n"
+    "       pednav map convert --from humolire|biba SOURCE --out MAP [--start X,Y] [--scale M_PER_PX]\n"
+    "                          [--origin lat,lon,height]\n"
     "  check      what is wrong with a pednav.map/1 map (docs/maps.md), each problem naming its feature\n"
     "             by JSON pointer; exit 1 when there is any\n"
     "    --start      a walk's start, m east and north in the map's frame (floor 0 by default): it must be\n"
@@ -34,6 +35,8 @@ constexpr const char* kUsage =
     "    --start      the walk's start, m in the source's frame, becomes (0, 0): biba x right, y down\n"
     "                 the image (default: core.txt's start point); humolire x right, y up from the\n"
     "                 image's bottom edge, as its keypoints (default: that frame's origin)\n"
+    "    --scale      metres per pixel in place of the source's own (core.txt's scale, map_data.json's);\n"
+    "                 --start is then in metres of this scale\n"
     "    --origin     write WGS-84 around this origin, the geodetic position of (0, 0)\n";
 
 pednav::geodesy::GeodeticPoint parse_origin(const std::string& text, const std::string& option) {
@@ -136,6 +139,10 @@ int convert(cli::Args& in) {
         } else if (a == "--start") {
             const std::vector<double> v = cli::parse_numbers(in.value(a), 2, a);
             c.start_source_m = {{v[0], v[1]}};
+        } else if (a == "--scale") {
+            const double v = cli::parse_numbers(in.value(a), 1, a)[0];
+            if (!(v > 0)) throw cli::UsageError("--scale (metres per pixel) must be positive");
+            c.scale_m_per_px = v;
         } else if (a == "--origin") {
             c.origin = parse_origin(in.value(a), a);
         } else if (!a.empty() && a[0] == '-') {

@@ -46,8 +46,12 @@ std::string humolire_to_geojson(const SourceFile& map_data, const MapConversion&
         throw std::runtime_error(map_data.name + (e.pointer.empty() ? "" : ":" + e.pointer) + ": " + e.what());
     }
     if (!doc.is_object()) src.fail("", "not a MapEditor map (a JSON object with \"links\" and \"scale\")");
-    const double scale = src.number(doc, "", "scale");
+    double scale = src.number(doc, "", "scale");
     if (!(scale > 0)) src.fail("/scale", "the scale (m per pixel) must be positive");
+    if (conversion.scale_m_per_px) {
+        if (!(*conversion.scale_m_per_px > 0)) throw std::invalid_argument("the scale (m per pixel) must be positive");
+        scale = *conversion.scale_m_per_px;
+    }
     const int start_floor = doc.contains("start_floor") ? src.integer(doc, "", "start_floor") : 0;
     for (const char* unread : {"polygons", "arrows"})
         if (doc.contains(unread) && !(doc[unread].is_array() && doc[unread].empty()))

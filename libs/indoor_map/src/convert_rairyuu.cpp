@@ -69,7 +69,8 @@ struct Core {
     SourcePoint start_px{0, 0};
 };
 
-Core read_core(const SourceFile& f) {
+// scale_m_per_px, when given, replaces the file's scale.
+Core read_core(const SourceFile& f, std::optional<double> scale_m_per_px) {
     const Reader rd{f};
     Core c;
     bool have_floor = false, have_scale = false, have_start = false;
@@ -102,6 +103,10 @@ Core read_core(const SourceFile& f) {
     }
     if (!have_floor || !have_scale || !have_start)
         throw std::runtime_error(f.name + ": needs floor, scale and start_point lines");
+    if (scale_m_per_px) {
+        if (!(*scale_m_per_px > 0)) throw std::invalid_argument("the scale (m per pixel) must be positive");
+        c.scale_m_per_px = *scale_m_per_px;
+    }
     if (c.start_floor < 0 || c.start_floor >= c.floors)
         throw std::runtime_error(f.name + ": start floor " + std::to_string(c.start_floor) + " is not one of its " +
                                  std::to_string(c.floors) + " floors");
@@ -116,7 +121,7 @@ struct Node {
 class Converter {
 public:
     Converter(const RairyuuMapFiles& files, const MapConversion& conversion)
-        : files_(files), core_(read_core(files.core)),
+        : files_(files), core_(read_core(files.core, conversion.scale_m_per_px)),
           start_m_{core_.start_px[0] * core_.scale_m_per_px, core_.start_px[1] * core_.scale_m_per_px},
           out_(conversion, conversion.start_source_m.value_or(start_m_)) {
         read_nodes();

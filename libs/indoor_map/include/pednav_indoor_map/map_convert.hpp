@@ -29,6 +29,10 @@ struct MapConversion {
     // The walk's start in the source's metres (rairyuu: x right, y down the
     // image; HuMoLiRe: x right, y up from the image's bottom edge): local (0, 0).
     std::optional<std::array<double, 2>> start_source_m;
+    // Metres per pixel in place of the source's own scale (a scale measured
+    // on another rendering of the plan than the one its nodes were drawn on);
+    // the source's metres above are then in this scale. Must be positive.
+    std::optional<double> scale_m_per_px;
 };
 
 // A source file's name (for error messages, "node.txt:12: ...") and text.
