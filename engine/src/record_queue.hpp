@@ -26,12 +26,17 @@ public:
         mask_ = c - 1;
     }
 
-    void push(const pn_record_header_t* r) {
-        if (end_ - begin_ > mask_) grow();
-        Slot& s = slots_[end_ & mask_];
-        copy_record(s.bytes, r);
-        ++end_;
+    // Copies the record in; returns its sequence number.
+    Seq push(const pn_record_header_t* r) {
+        make_room();
+        copy_record(slots_[end_ & mask_].bytes, r);
+        return end_++;
     }
+    // Grows if full (may throw std::bad_alloc): then the next push cannot fail.
+    void make_room() {
+        if (end_ - begin_ > mask_) grow();
+    }
+    pn_record_header_t* at(Seq seq) { return reinterpret_cast<pn_record_header_t*>(slots_[seq & mask_].bytes); }
     Seq begin() const { return begin_; }
     Seq end() const { return end_; }
     const pn_record_header_t* at(Seq seq) const {

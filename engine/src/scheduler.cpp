@@ -45,8 +45,10 @@ void Stage::clear_segment() {
     last_stored_t_ns = INT64_MIN;
     last_input_t_ns = INT64_MIN;
     for (auto& t : last_emitted_t_ns) t = INT64_MIN;
-    for (auto& in : forward) in.cursor = 0;
-    for (auto& in : feedback) in.cursor = 0;
+    for (auto& in : forward) in.fifo.clear();
+    for (auto& in : feedback) in.fifo.clear();
+    next_forward_t_ns = kInf;
+    feedback_pending = 0;
 }
 
 // A full output queue loses outputs the app has not polled: said at the 1st,
@@ -96,18 +98,34 @@ void Scheduler::wire() {
     const size_t n = stages_.size();
     queues_.assign(n + 1, RecordQueue(64));
     queue_wanted_.assign(n + 1, 0);
+    routes_.assign(n + 1, {});
+    readers_.assign(n + 1, {});
     for (size_t k = 0; k < n; ++k) {
         Stage& s = *stages_[k];
         const uint64_t consumes = s.descriptor->consumes;
-        if (uint64_t m = consumes & kInputTypes) s.forward.push_back({0, m, 0});
+        if (uint64_t m = consumes & kInputTypes) s.forward.push_back({0, m, EdgeFifo()});
         for (size_t i = 0; i < n; ++i) {
             if (i == k) continue;
             const uint64_t m = consumes & stages_[i]->descriptor->produces;
             if (!m) continue;
-            (i < k ? s.forward : s.feedback).push_back({static_cast<int>(i + 1), m, 0});
+            (i < k ? s.forward : s.feedback).push_back({static_cast<int>(i + 1), m, EdgeFifo()});
         }
-        for (const auto& in : s.forward) queue_wanted_[in.queue] |= in.mask;
-        for (const auto& in : s.feedback) queue_wanted_[in.queue] |= in.mask;
+    }
+    // The edges are in place (the vectors no longer move): route each type of
+    // each queue to the edges that read it, in stage order.
+    for (size_t k = 0; k < n; ++k) {
+        Stage& s = *stages_[k];
+        for (int feedback = 0; feedback < 2; ++feedback) {
+            for (auto& in : feedback ? s.feedback : s.forward) {
+                queue_wanted_[in.queue] |= in.mask;
+                readers_[in.queue].push_back(&in.fifo);
+                for (pn_record_type_t t = 0; t < PN_REC_TYPE_COUNT; ++t) {
+                    if (!(in.mask & PN_REC_MASK(t))) continue;
+                    Route& route = routes_[in.queue][t];
+                    route.readers[route.count++] = Route::Reader{&in.fifo, &s, feedback == 1};
+                }
+            }
+        }
     }
     // The last producer of each type feeds the output queue.
     uint64_t seen = 0;
@@ -116,7 +134,36 @@ void Scheduler::wire() {
         final_producer_mask_[k] = p & ~seen;
         seen |= p;
     }
+    for (size_t k = 0; k < n; ++k) {
+        Stage& s = *stages_[k];
+        for (pn_record_type_t t = 0; t < PN_REC_TYPE_COUNT; ++t) {
+            const uint64_t bit = PN_REC_MASK(t);
+            if (!(s.descriptor->produces & bit)) continue;
+            s.emits[t] = Stage::Emission{min_record_size(t), (queue_wanted_[k + 1] & bit) != 0,
+                                         (final_producer_mask_[k] & bit) != 0};
+        }
+    }
     for (auto& s : stages_) s->latency_ns = checked_latency(*s);
+}
+
+void Scheduler::store(int q, const pn_record_header_t* r) {
+    RecordQueue& queue = queues_[q];
+    const Route& route = routes_[q][r->type];
+    // Room first, so that nothing is stored halfway when memory runs out.
+    queue.make_room();
+    for (uint32_t i = 0; i < route.count; ++i) route.readers[i].fifo->make_room();
+    const RecordQueue::Seq seq = queue.push(r);
+    if (q) queue.at(seq)->source_id = static_cast<uint32_t>(q);  // app records keep the app's
+    const int64_t t = r->t_ns;
+    for (uint32_t i = 0; i < route.count; ++i) {
+        const Route::Reader& reader = route.readers[i];
+        reader.fifo->push(t, seq);
+        if (reader.feedback) {
+            ++reader.stage->feedback_pending;
+        } else if (t < reader.stage->next_forward_t_ns) {
+            reader.stage->next_forward_t_ns = t;
+        }
+    }
 }
 
 int64_t Scheduler::latency_ns() const {
@@ -141,13 +188,13 @@ pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
         std::snprintf(why, n, "emitted a NULL record");
         return refuse(s, PN_E_INVALID_ARGUMENT);
     }
-    const uint32_t min_size = min_record_size(r->type);
-    if (min_size == 0 || !(s.descriptor->produces & PN_REC_MASK(r->type))) {
+    const Stage::Emission e = r->type < PN_REC_TYPE_COUNT ? s.emits[r->type] : Stage::Emission{};
+    if (e.min_size == 0) {
         std::snprintf(why, n, "emitted a record of type %u (%s) that its descriptor does not declare in produces",
                       r->type, record_type_name(r->type));
         return refuse(s, PN_E_INVALID_ARGUMENT);
     }
-    if (r->struct_size < min_size || r->struct_size > PN_RECORD_MAX_SIZE) {
+    if (r->struct_size < e.min_size || r->struct_size > PN_RECORD_MAX_SIZE) {
         std::snprintf(why, n, "emitted a %s record with struct_size %u", record_type_name(r->type), r->struct_size);
         return refuse(s, PN_E_INVALID_ARGUMENT);
     }
@@ -167,21 +214,18 @@ pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
                       record_type_name(r->type), seconds(r->t_ns), record_type_name(r->type), seconds(last_of_type));
         return refuse(s, PN_E_OUT_OF_ORDER);
     }
-    const uint64_t bit = PN_REC_MASK(r->type);
     const int q = s.index + 1;
-    if (queue_wanted_[q] & bit) {
+    if (e.stored) {
         if (r->t_ns < s.last_stored_t_ns) {
             std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous output at t=%.6f s",
                           record_type_name(r->type), seconds(r->t_ns), seconds(s.last_stored_t_ns));
             return refuse(s, PN_E_OUT_OF_ORDER);
         }
         s.last_stored_t_ns = r->t_ns;
-        queues_[q].push(r);
-        auto* stored = const_cast<pn_record_header_t*>(queues_[q].at(queues_[q].end() - 1));
-        stored->source_id = static_cast<uint32_t>(q);
+        store(q, r);
     }
     last_of_type = r->t_ns;
-    if ((final_producer_mask_[s.index] & output_mask() & bit) && !outputs_.push(r, static_cast<uint32_t>(q)))
+    if (e.to_output && (output_mask() & PN_REC_MASK(r->type)) && !outputs_.push(r, static_cast<uint32_t>(q)))
         warn_outputs_dropped();
     ++s.records_out;
     return PN_OK;
@@ -189,9 +233,12 @@ pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
 
 void Scheduler::push(const pn_record_header_t* r) {
     if (stopped_) return;
-    for (auto& s : stages_) s->flushed = false;
+    if (flushed_) {
+        for (auto& s : stages_) s->flushed = false;
+        flushed_ = false;
+    }
     ++records_in_;
-    if (queue_wanted_[0] & PN_REC_MASK(r->type)) queues_[0].push(r);
+    if (queue_wanted_[0] & PN_REC_MASK(r->type)) store(0, r);
     // Release app records strictly before the newest time (see header); a
     // record at the same time as the previous one releases nothing new.
     if (r->t_ns > last_app_t_ns_) {
@@ -208,6 +255,7 @@ void Scheduler::flush() {
         if (stopped_) break;
         if (PNP_HAS_SLOT(s->ops, pnp_node_ops_t, flush)) call_flush(*s);
         s->flushed = true;
+        flushed_ = true;
         drain();
     }
     app_limit_ns_ = last_app_t_ns_;  // later pushes must come after the flushed data
@@ -231,6 +279,7 @@ pn_status_t Scheduler::reset(pn_error_t* err) {
         }
     }
     outputs_.clear();
+    flushed_ = false;
     app_limit_ns_ = INT64_MIN;
     last_app_t_ns_ = INT64_MIN;
     failure_ = StageFailure{};
@@ -245,29 +294,19 @@ StageFailure Scheduler::take_failure() {
     return f;
 }
 
-int64_t Scheduler::peek(Stage& s, int64_t limit) {
-    int64_t best = kInf;
-    for (auto& in : s.forward) {
-        const RecordQueue& q = queues_[in.queue];
-        while (in.cursor < q.end() && !(in.mask & PN_REC_MASK(q.at(in.cursor)->type))) ++in.cursor;
-        if (in.cursor < q.end()) best = std::min(best, q.at(in.cursor)->t_ns);
-    }
-    return best <= limit ? best : kInf;
-}
-
 bool Scheduler::deliver_feedback(Stage& s) {
     for (auto& in : s.feedback) {
+        if (in.fifo.empty()) continue;
         const RecordQueue& q = queues_[in.queue];
         const pn_record_header_t* batch[kMaxBatch];
         uint32_t count = 0;
-        while (in.cursor < q.end() && count < kMaxBatch) {
-            const pn_record_header_t* r = q.at(in.cursor++);
-            if (in.mask & PN_REC_MASK(r->type)) batch[count++] = r;
+        while (!in.fifo.empty() && count < kMaxBatch) {
+            batch[count++] = q.at(in.fifo.front().seq);
+            in.fifo.pop();
         }
-        if (count) {
-            call_process(s, batch, count);
-            return true;
-        }
+        s.feedback_pending -= count;
+        call_process(s, batch, count);
+        return true;
     }
     return false;
 }
@@ -276,19 +315,16 @@ void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
     // Every record at t_ns, app inputs first, then earlier stages in order.
     const pn_record_header_t* batch[kMaxBatch];
     uint32_t count = 0;
+    int64_t next = kInf;
     for (auto& in : s.forward) {
         const RecordQueue& q = queues_[in.queue];
-        while (in.cursor < q.end() && count < kMaxBatch) {
-            const pn_record_header_t* r = q.at(in.cursor);
-            if (!(in.mask & PN_REC_MASK(r->type))) {
-                ++in.cursor;
-                continue;
-            }
-            if (r->t_ns != t_ns) break;
-            batch[count++] = r;
-            ++in.cursor;
+        while (count < kMaxBatch && !in.fifo.empty() && in.fifo.front().t_ns == t_ns) {
+            batch[count++] = q.at(in.fifo.front().seq);
+            in.fifo.pop();
         }
+        if (!in.fifo.empty()) next = std::min(next, in.fifo.front().t_ns);
     }
+    s.next_forward_t_ns = next;
     s.last_input_t_ns = t_ns;
     call_process(s, batch, count);
 }
@@ -383,48 +419,47 @@ void Scheduler::drain() {
 // consumes what has become available to it. So a stage consumes sample n
 // before any zero-latency stage above it sees sample n+1, and feedback sent
 // up while processing sample n is delivered before the receiver's next record.
+// A stage below with nothing to do is not entered (has_work): the calls made
+// are those of the full recursion.
 void Scheduler::drain_from(size_t k, int64_t limit) {
     Stage& s = *stages_[k];
     const bool last = k + 1 == stages_.size();
     for (;;) {
         if (stopped_) return;
-        const bool had_feedback = !s.feedback.empty() && deliver_feedback(s);
-        const int64_t t = peek(s, limit);
+        const bool had_feedback = s.feedback_pending && deliver_feedback(s);
+        const int64_t t = s.next_forward_t_ns <= limit ? s.next_forward_t_ns : kInf;
         if (!last) {
             // A zero-latency (or flushed) stage has emitted everything about
             // the times before its next input; a stage with look-ahead L only
             // what is about its newest consumed input time minus L.
             const int64_t below = (s.flushed || s.latency_ns == 0) ? (t == kInf ? limit : t - 1)
                                                                    : saturating_sub(s.last_input_t_ns, s.latency_ns);
-            drain_from(k + 1, below);
+            if (has_work(k + 1, below)) drain_from(k + 1, below);
         }
         if (t == kInf) {
-            if (had_feedback || has_feedback(s)) continue;
+            if (had_feedback || s.feedback_pending) continue;
             return;
         }
         deliver_forward(s, t);
     }
 }
 
-bool Scheduler::has_feedback(const Stage& s) const {
-    for (const auto& in : s.feedback) {
-        const RecordQueue& q = queues_[in.queue];
-        for (RecordQueue::Seq c = in.cursor; c < q.end(); ++c)
-            if (in.mask & PN_REC_MASK(q.at(c)->type)) return true;
+bool Scheduler::has_work(size_t k, int64_t limit) const {
+    for (; k < stages_.size(); ++k) {
+        const Stage& s = *stages_[k];
+        if (s.feedback_pending || s.next_forward_t_ns <= limit) return true;
+        // Nothing within the limit: what the stage passes on, as drain_from would.
+        if (!s.flushed && s.latency_ns != 0) limit = saturating_sub(s.last_input_t_ns, s.latency_ns);
     }
     return false;
 }
 
 void Scheduler::release_consumed() {
     for (size_t q = 0; q < queues_.size(); ++q) {
-        RecordQueue::Seq min_cursor = queues_[q].end();
-        for (auto& s : stages_) {
-            for (const auto& in : s->forward)
-                if (in.queue == static_cast<int>(q)) min_cursor = std::min(min_cursor, in.cursor);
-            for (const auto& in : s->feedback)
-                if (in.queue == static_cast<int>(q)) min_cursor = std::min(min_cursor, in.cursor);
-        }
-        queues_[q].release_until(min_cursor);
+        RecordQueue::Seq oldest_unread = queues_[q].end();
+        for (const EdgeFifo* edge : readers_[q])
+            if (!edge->empty()) oldest_unread = std::min(oldest_unread, edge->front().seq);
+        queues_[q].release_until(oldest_unread);
     }
 }
 

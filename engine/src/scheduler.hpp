@@ -16,11 +16,16 @@
 //   - Lock-step: the deepest stage with work goes first, so a stage consumes
 //     sample n before any zero-latency stage upstream of it sees sample n+1;
 //     feedback emitted at sample n therefore applies from sample n+1.
+//   - Every edge (a stage reading some types of one queue) has its own FIFO
+//     of the records it carries, filled when a record is stored; each stage
+//     keeps the time of its next forward record and a count of its pending
+//     feedback, so finding work never scans records.
 //   - App inputs at the newest pushed time are held back until a later time is
 //     pushed (or flush), so equal-time records are ordered the same however
 //     the app batches its pushes: the output is bit-identical for the same input.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -31,6 +36,7 @@
 
 #include "config.hpp"
 #include "diagnostics.hpp"
+#include "edge_fifo.hpp"
 #include "output_queue.hpp"
 #include "record_queue.hpp"
 
@@ -63,17 +69,26 @@ struct Stage {
     int64_t call_budget_ns = 0;  // 0 = no budget
     OverBudget over_budget = OverBudget::warn;
 
-    // Wiring, filled by Scheduler::wire().
+    // Wiring, filled by Scheduler::wire(): the edges into this stage.
     struct Input {
         int queue;
         uint64_t mask;
-        RecordQueue::Seq cursor;
+        EdgeFifo fifo;  // the records of `mask` from `queue` not yet delivered
     };
     std::vector<Input> forward;
     std::vector<Input> feedback;
+    // What the sink does with each record type the stage produces.
+    struct Emission {
+        uint32_t min_size = 0;   // 0: the stage does not produce the type (or it is unknown)
+        bool stored = false;     // a later or earlier stage reads it: into the stage's queue
+        bool to_output = false;  // the stage is its last producer: to the output queue (if in the mask)
+    };
+    Emission emits[PN_REC_TYPE_COUNT];
 
     // State of the current segment.
     bool flushed = false;
+    int64_t next_forward_t_ns = INT64_MAX;  // oldest record in the forward edges
+    uint32_t feedback_pending = 0;          // records in the feedback edges
     int64_t last_stored_t_ns = INT64_MIN;  // newest record put into its queue
     int64_t last_emitted_t_ns[PN_REC_TYPE_COUNT];  // newest accepted record per type
     int64_t last_input_t_ns = INT64_MIN;  // newest forward record consumed
@@ -141,12 +156,25 @@ public:
     pn_status_t accept(Stage& stage, const pn_record_header_t* record);
 
 private:
+    // Where a record of one type from one queue goes: the edges that carry it.
+    struct Route {
+        struct Reader {
+            EdgeFifo* fifo;
+            Stage* stage;
+            bool feedback;
+        };
+        Reader readers[kRoleCount];
+        uint32_t count = 0;
+    };
+
     void wire();
+    // Copies a record into queue q and onto the edges that read its type.
+    void store(int q, const pn_record_header_t* r);
     void drain();
     void drain_from(size_t k, int64_t limit);
-    bool has_feedback(const Stage& s) const;
-    // Next forward record time for stage k within `limit`, INT64_MAX if none.
-    int64_t peek(Stage& s, int64_t limit);
+    // Whether drain_from(k, limit) would call any plugin: some stage from k on
+    // has feedback, or a forward record within the limit its upstream gives it.
+    bool has_work(size_t k, int64_t limit) const;
     bool deliver_feedback(Stage& s);
     void deliver_forward(Stage& s, int64_t t_ns);
     void call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count);
@@ -162,6 +190,9 @@ private:
     std::vector<std::unique_ptr<Stage>> stages_;
     std::vector<RecordQueue> queues_;      // 0 = app, k+1 = stage k
     std::vector<uint64_t> queue_wanted_;   // union of reader masks per queue
+    std::vector<std::array<Route, PN_REC_TYPE_COUNT>> routes_;  // per queue, per type
+    std::vector<std::vector<const EdgeFifo*>> readers_;        // per queue: every edge reading it
+    bool flushed_ = false;                  // some stage has flushed since the last push
     uint64_t final_producer_mask_[kRoleCount] = {};  // per stage: types it is the last producer of
     OutputQueue outputs_;
     std::atomic<uint64_t> output_mask_;
