@@ -40,7 +40,9 @@ struct ValueProblem {
 
 ValueProblem find_value_problem(const pn_record_header_t* record);
 // The same verdict, !find_value_problem(record), from the same checks with
-// nothing to fill in: the per-sample path.
+// nothing to fill in: the per-sample path. For the per-sample types it first
+// proves the values finite from their sums (one addition per value), and runs
+// the element-by-element checks only when a sum is not finite.
 bool record_values_ok(const pn_record_header_t* record);
 // "accel_mps2[2] is nan", "cov_enu_m2[4] is -1 (negative variance)"; empty when fine.
 std::string describe(const ValueProblem& problem);
