@@ -1,26 +1,25 @@
 // SPDX-License-Identifier: Apache-2.0
 // One edge of a pipeline: the records one stage reads from one queue (of the
-// types it consumes from that queue's producer), oldest first, each as its
-// time and its sequence number in the queue. The record stays in its queue;
-// the edge tells its reader the time of its next record, and where it is,
-// without looking at records of other types or at other readers' records.
-// A power-of-two ring that doubles when full and is reused otherwise, so
-// steady-state streaming allocates nothing.
+// types it consumes from that queue's producer), oldest first, as pointers
+// into the queue's slots. The record stays in its queue; the edge hands its
+// reader the next one, and its time, without looking at records of other
+// types or at other readers' records. When the queue grows its records move:
+// the queue then re-points its edges (RecordQueue::grow).
+// A power-of-two ring, kept at least as large as its queue (it never holds
+// more records than the queue), reused otherwise, so steady-state streaming
+// allocates nothing.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "record_queue.hpp"
+#include <pednav/pn_types.h>
 
 namespace pednav::engine {
 
 class EdgeFifo {
 public:
-    struct Entry {
-        int64_t t_ns;
-        RecordQueue::Seq seq;
-    };
+    using Record = const pn_record_header_t*;
 
     explicit EdgeFifo(size_t initial_capacity = 64) {
         size_t c = 1;
@@ -31,25 +30,50 @@ public:
 
     bool empty() const { return head_ == tail_; }
     size_t size() const { return static_cast<size_t>(tail_ - head_); }
-    const Entry& front() const { return ring_[head_ & mask_]; }
-    void pop() { ++head_; }
-    // Grows if full (may throw std::bad_alloc): then push() cannot fail.
-    void make_room() {
-        if (tail_ - head_ > mask_) grow();
+    Record front() const { return ring_[head_ & mask_]; }
+    // The time of the oldest record, INT64_MAX when empty.
+    int64_t front_t_ns() const { return head_ == tail_ ? INT64_MAX : ring_[head_ & mask_]->t_ns; }
+    // Needs room: see the class comment.
+    void push(Record record) { ring_[tail_++ & mask_] = record; }
+
+    // Appends to batch[count ..] the records at the front whose time is
+    // t_ns, while count < max; returns the new count.
+    uint32_t take_at(int64_t t_ns, Record* batch, uint32_t count, uint32_t max) {
+        uint64_t h = head_;
+        const uint64_t end = tail_;
+        const Record* ring = ring_.data();
+        while (h != end && count < max && ring[h & mask_]->t_ns == t_ns) batch[count++] = ring[h++ & mask_];
+        head_ = h;
+        return count;
     }
-    void push(int64_t t_ns, RecordQueue::Seq seq) { ring_[tail_++ & mask_] = Entry{t_ns, seq}; }
+    // Appends up to max records from the front to batch; returns how many.
+    uint32_t take(Record* batch, uint32_t max) {
+        uint32_t count = 0;
+        const Record* ring = ring_.data();
+        while (head_ != tail_ && count < max) batch[count++] = ring[head_++ & mask_];
+        return count;
+    }
+
+    size_t capacity() const { return ring_.size(); }
+    // Grows the ring to at least `capacity` entries (may throw std::bad_alloc).
+    void reserve(size_t capacity) {
+        size_t c = ring_.size();
+        while (c < capacity) c <<= 1;
+        if (c == ring_.size()) return;
+        std::vector<Record> bigger(c);
+        for (uint64_t i = head_; i < tail_; ++i) bigger[i & (c - 1)] = ring_[i & mask_];
+        ring_.swap(bigger);
+        mask_ = c - 1;
+    }
+    // Every record r becomes moved(r).
+    template <class F>
+    void repoint(F moved) {
+        for (uint64_t i = head_; i < tail_; ++i) ring_[i & mask_] = moved(ring_[i & mask_]);
+    }
     void clear() { head_ = tail_ = 0; }
 
 private:
-    void grow() {
-        const size_t bigger_mask = 2 * mask_ + 1;
-        std::vector<Entry> bigger(bigger_mask + 1);
-        for (uint64_t i = head_; i < tail_; ++i) bigger[i & bigger_mask] = ring_[i & mask_];
-        ring_.swap(bigger);
-        mask_ = bigger_mask;
-    }
-
-    std::vector<Entry> ring_;
+    std::vector<Record> ring_;
     uint64_t mask_ = 0;
     uint64_t head_ = 0, tail_ = 0;
 };

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <new>
 
 #include "record_checks.hpp"
+#include "scheduler_store.hpp"
 
 namespace pednav::engine {
 
@@ -21,17 +21,6 @@ int64_t saturating_sub(int64_t a, int64_t b) {
     return (b > 0 && a < INT64_MIN + b) ? INT64_MIN : a - b;
 }
 
-pn_status_t sink_emit(const pnp_sink_t* sink, const pn_record_header_t* record) noexcept {
-    Stage* s = static_cast<Stage*>(sink->sink_data);
-    try {
-        return s->scheduler->accept(*s, record);
-    } catch (const std::bad_alloc&) {  // a queue could not grow
-        std::snprintf(s->sink_problem, sizeof s->sink_problem, "no memory to queue its output");
-        return PN_E_OUT_OF_MEMORY;
-    }
-}
-
-double seconds(int64_t t_ns) { return static_cast<double>(t_ns) * 1e-9; }
 
 int64_t now_ns() {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
@@ -51,32 +40,22 @@ void Stage::clear_segment() {
     feedback_pending = 0;
 }
 
-// A full output queue loses outputs the app has not polled: said at the 1st,
-// 2nd, 4th, 8th ... drop so that a consumer that keeps falling behind is heard
-// without one line per record.
-void Scheduler::warn_outputs_dropped() noexcept {
-    const uint64_t n = outputs_.dropped();
-    if ((n & (n - 1)) != 0) return;
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "the output queue is full (%zu records): %llu output%s dropped so far; poll more often or "
-                  "raise output_queue_capacity",
-                  outputs_.capacity(), static_cast<unsigned long long>(n), n == 1 ? "" : "s");
-    diagnostics_.warn("engine", line);
-}
-
 Scheduler::Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity, Diagnostics& diagnostics)
     : stages_(std::move(stages)),
       outputs_(output_capacity),
       output_mask_(PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_STEP)),
       diagnostics_(diagnostics) {
+    if (stages_.size() > static_cast<size_t>(kRoleCount))  // one per role, by the config's construction
+        throw ConfigProblem{PN_E_INTERNAL, "pipeline", "more stages than roles"};
     for (size_t k = 0; k < stages_.size(); ++k) {
         Stage& s = *stages_[k];
         s.scheduler = this;
         s.index = static_cast<int>(k);
         s.sink.sink_data = &s;
-        s.sink.emit = &sink_emit;
+        s.sink.emit = &Scheduler::sink_emit;
+        s.process = s.ops->process;
         s.clear_segment();
+        stage_at_[k] = &s;
     }
     wire();
 }
@@ -122,7 +101,10 @@ void Scheduler::wire() {
                 for (pn_record_type_t t = 0; t < PN_REC_TYPE_COUNT; ++t) {
                     if (!(in.mask & PN_REC_MASK(t))) continue;
                     Route& route = routes_[in.queue][t];
-                    route.readers[route.count++] = Route::Reader{&in.fifo, &s, feedback == 1};
+                    if (feedback)
+                        route.feedback[route.feedback_count++] = Route::Feedback{&in.fifo, &s.feedback_pending};
+                    else
+                        route.forward[route.forward_count++] = Route::Forward{&in.fifo, &s.next_forward_t_ns};
                 }
             }
         }
@@ -139,96 +121,17 @@ void Scheduler::wire() {
         for (pn_record_type_t t = 0; t < PN_REC_TYPE_COUNT; ++t) {
             const uint64_t bit = PN_REC_MASK(t);
             if (!(s.descriptor->produces & bit)) continue;
-            s.emits[t] = Stage::Emission{min_record_size(t), (queue_wanted_[k + 1] & bit) != 0,
+            s.emits[t] = Stage::Emission{min_record_size(t), values_check_for(t), (queue_wanted_[k + 1] & bit) != 0,
                                          (final_producer_mask_[k] & bit) != 0};
         }
     }
     for (auto& s : stages_) s->latency_ns = checked_latency(*s);
 }
 
-void Scheduler::store(int q, const pn_record_header_t* r) {
-    RecordQueue& queue = queues_[q];
-    const Route& route = routes_[q][r->type];
-    // Room first, so that nothing is stored halfway when memory runs out.
-    queue.make_room();
-    for (uint32_t i = 0; i < route.count; ++i) route.readers[i].fifo->make_room();
-    const RecordQueue::Seq seq = queue.push(r);
-    if (q) queue.at(seq)->source_id = static_cast<uint32_t>(q);  // app records keep the app's
-    const int64_t t = r->t_ns;
-    for (uint32_t i = 0; i < route.count; ++i) {
-        const Route::Reader& reader = route.readers[i];
-        reader.fifo->push(t, seq);
-        if (reader.feedback) {
-            ++reader.stage->feedback_pending;
-        } else if (t < reader.stage->next_forward_t_ns) {
-            reader.stage->next_forward_t_ns = t;
-        }
-    }
-}
-
 int64_t Scheduler::latency_ns() const {
     int64_t sum = 0;
     for (const auto& s : stages_) sum += s->latency_ns;
     return sum;
-}
-
-pn_status_t Scheduler::refuse(Stage& s, pn_status_t status) {
-    char line[320];
-    std::snprintf(line, sizeof line, "misbehaving: %s", s.sink_problem);
-    diagnostics_.warn(s.instance_name.c_str(), line);
-    return status;
-}
-
-// The sink. Every check writes its reason into fixed storage: nothing here
-// allocates but a queue that grows (which sink_emit catches).
-pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
-    char* why = s.sink_problem;
-    const size_t n = sizeof s.sink_problem;
-    if (!r) {
-        std::snprintf(why, n, "emitted a NULL record");
-        return refuse(s, PN_E_INVALID_ARGUMENT);
-    }
-    const Stage::Emission e = r->type < PN_REC_TYPE_COUNT ? s.emits[r->type] : Stage::Emission{};
-    if (e.min_size == 0) {
-        std::snprintf(why, n, "emitted a record of type %u (%s) that its descriptor does not declare in produces",
-                      r->type, record_type_name(r->type));
-        return refuse(s, PN_E_INVALID_ARGUMENT);
-    }
-    if (r->struct_size < e.min_size || r->struct_size > PN_RECORD_MAX_SIZE) {
-        std::snprintf(why, n, "emitted a %s record with struct_size %u", record_type_name(r->type), r->struct_size);
-        return refuse(s, PN_E_INVALID_ARGUMENT);
-    }
-    if (!record_values_ok(r)) {
-        char value[128];
-        format_value_problem(find_value_problem(r), value, sizeof value);
-        std::snprintf(why, n, "emitted a %s record at t=%.6f s whose %s", record_type_name(r->type), seconds(r->t_ns),
-                      value);
-        return refuse(s, PN_E_NUMERIC);
-    }
-    // Time order per type, whoever reads the type (a later stage or only the
-    // app); and over every type the stage's queue holds, which later stages
-    // merge by time.
-    int64_t& last_of_type = s.last_emitted_t_ns[r->type];
-    if (r->t_ns < last_of_type) {
-        std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous %s at t=%.6f s",
-                      record_type_name(r->type), seconds(r->t_ns), record_type_name(r->type), seconds(last_of_type));
-        return refuse(s, PN_E_OUT_OF_ORDER);
-    }
-    const int q = s.index + 1;
-    if (e.stored) {
-        if (r->t_ns < s.last_stored_t_ns) {
-            std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous output at t=%.6f s",
-                          record_type_name(r->type), seconds(r->t_ns), seconds(s.last_stored_t_ns));
-            return refuse(s, PN_E_OUT_OF_ORDER);
-        }
-        s.last_stored_t_ns = r->t_ns;
-        store(q, r);
-    }
-    last_of_type = r->t_ns;
-    if (e.to_output && (output_mask() & PN_REC_MASK(r->type)) && !outputs_.push(r, static_cast<uint32_t>(q)))
-        warn_outputs_dropped();
-    ++s.records_out;
-    return PN_OK;
 }
 
 void Scheduler::push(const pn_record_header_t* r) {
@@ -294,55 +197,49 @@ StageFailure Scheduler::take_failure() {
     return f;
 }
 
-bool Scheduler::deliver_feedback(Stage& s) {
+// One batch of feedback, from the first feedback edge that has any.
+PEDNAV_ALWAYS_INLINE void Scheduler::deliver_feedback(Stage& s) {
+    const pn_record_header_t* batch[kMaxBatch];
     for (auto& in : s.feedback) {
         if (in.fifo.empty()) continue;
-        const RecordQueue& q = queues_[in.queue];
-        const pn_record_header_t* batch[kMaxBatch];
-        uint32_t count = 0;
-        while (!in.fifo.empty() && count < kMaxBatch) {
-            batch[count++] = q.at(in.fifo.front().seq);
-            in.fifo.pop();
-        }
+        const uint32_t count = in.fifo.take(batch, kMaxBatch);
         s.feedback_pending -= count;
         call_process(s, batch, count);
-        return true;
+        return;
     }
-    return false;
 }
 
-void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
-    // Every record at t_ns, app inputs first, then earlier stages in order.
+// Every record at t_ns, app inputs first, then earlier stages in order.
+PEDNAV_ALWAYS_INLINE void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
     const pn_record_header_t* batch[kMaxBatch];
     uint32_t count = 0;
     int64_t next = kInf;
-    for (auto& in : s.forward) {
-        const RecordQueue& q = queues_[in.queue];
-        while (count < kMaxBatch && !in.fifo.empty() && in.fifo.front().t_ns == t_ns) {
-            batch[count++] = q.at(in.fifo.front().seq);
-            in.fifo.pop();
-        }
-        if (!in.fifo.empty()) next = std::min(next, in.fifo.front().t_ns);
+    for (Stage::Input *in = s.forward.data(), *end = in + s.forward.size(); in != end; ++in) {
+        count = in->fifo.take_at(t_ns, batch, count, kMaxBatch);
+        const int64_t front = in->fifo.front_t_ns();
+        next = front < next ? front : next;
     }
     s.next_forward_t_ns = next;
     s.last_input_t_ns = t_ns;
     call_process(s, batch, count);
 }
 
-void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count) {
+PEDNAV_ALWAYS_INLINE void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count) {
     s.records_in += count;
     pn_error_t err;
     err.struct_size = sizeof err;
     err.code = PN_OK;
     err.where[0] = err.message[0] = '\0';
-    pn_status_t st;
-    if (s.call_budget_ns) {
-        const int64_t t0 = now_ns();
-        st = s.ops->process(s.self, records, count, &s.sink, &err);
-        check_budget(s, now_ns() - t0, "process");
-    } else {
-        st = s.ops->process(s.self, records, count, &s.sink, &err);
-    }
+    if (s.call_budget_ns) return call_process_timed(s, records, count, err);
+    const pn_status_t st = s.process(s.self, records, count, &s.sink, &err);
+    if (PN_FAILED(st)) report_failure(s, st, err, "process");
+}
+
+void Scheduler::call_process_timed(Stage& s, const pn_record_header_t* const* records, uint32_t count,
+                                   pn_error_t& err) {
+    const int64_t t0 = now_ns();
+    const pn_status_t st = s.process(s.self, records, count, &s.sink, &err);
+    check_budget(s, now_ns() - t0, "process");
     if (PN_FAILED(st)) report_failure(s, st, err, "process");
 }
 
@@ -411,30 +308,39 @@ void Scheduler::report_failure(Stage& s, pn_status_t status, const pn_error_t& e
 }
 
 void Scheduler::drain() {
-    if (!stages_.empty()) drain_from(0, app_limit_ns_);
+    switch (stages_.size()) {  // the depth is fixed at create: each one compiled with its levels unrolled
+        case 1: drain_level<0, 1>(app_limit_ns_); break;
+        case 2: drain_level<0, 2>(app_limit_ns_); break;
+        case 3: drain_level<0, 3>(app_limit_ns_); break;
+        case 4: drain_level<0, 4>(app_limit_ns_); break;
+        default: break;
+    }
     if ((++drains_ & 63) == 0 || app_limit_ns_ == kInf) release_consumed();
 }
 
-// Depth first: before stage k takes its next record, every stage below it
+// Depth first: before stage K takes its next record, every stage below it
 // consumes what has become available to it. So a stage consumes sample n
 // before any zero-latency stage above it sees sample n+1, and feedback sent
 // up while processing sample n is delivered before the receiver's next record.
 // A stage below with nothing to do is not entered (has_work): the calls made
-// are those of the full recursion.
-void Scheduler::drain_from(size_t k, int64_t limit) {
-    Stage& s = *stages_[k];
-    const bool last = k + 1 == stages_.size();
+// are those of the full recursion, in its order.
+template <int K, int N>
+void Scheduler::drain_level(int64_t limit) {
+    Stage& s = *stage_at_[K];
+    // A zero-latency (or flushed) stage has emitted everything about the
+    // times before its next input; a stage with look-ahead L only what is
+    // about its newest consumed input time minus L. (Neither changes while
+    // the pipeline drains.)
+    const bool passes_limit = s.flushed || s.latency_ns == 0;
     for (;;) {
         if (stopped_) return;
-        const bool had_feedback = s.feedback_pending && deliver_feedback(s);
+        const bool had_feedback = s.feedback_pending != 0;  // then some feedback edge has records
+        if (had_feedback) deliver_feedback(s);
         const int64_t t = s.next_forward_t_ns <= limit ? s.next_forward_t_ns : kInf;
-        if (!last) {
-            // A zero-latency (or flushed) stage has emitted everything about
-            // the times before its next input; a stage with look-ahead L only
-            // what is about its newest consumed input time minus L.
-            const int64_t below = (s.flushed || s.latency_ns == 0) ? (t == kInf ? limit : t - 1)
-                                                                   : saturating_sub(s.last_input_t_ns, s.latency_ns);
-            if (has_work(k + 1, below)) drain_from(k + 1, below);
+        if constexpr (K + 1 < N) {
+            const int64_t below =
+                passes_limit ? (t == kInf ? limit : t - 1) : saturating_sub(s.last_input_t_ns, s.latency_ns);
+            if (has_work<K + 1, N>(below)) drain_level<K + 1, N>(below);
         }
         if (t == kInf) {
             if (had_feedback || s.feedback_pending) continue;
@@ -444,12 +350,16 @@ void Scheduler::drain_from(size_t k, int64_t limit) {
     }
 }
 
-bool Scheduler::has_work(size_t k, int64_t limit) const {
-    for (; k < stages_.size(); ++k) {
-        const Stage& s = *stages_[k];
-        if (s.feedback_pending || s.next_forward_t_ns <= limit) return true;
-        // Nothing within the limit: what the stage passes on, as drain_from would.
+// Whether drain_level<K, N>(limit) would call a plugin: stage K or one below
+// it has feedback, or a forward record within the limit its upstream passes on.
+template <int K, int N>
+bool Scheduler::has_work(int64_t limit) const {
+    const Stage& s = *stage_at_[K];
+    if (s.feedback_pending || s.next_forward_t_ns <= limit) return true;
+    if constexpr (K + 1 < N) {
+        // Nothing within the limit: what the stage passes on, as drain_level would.
         if (!s.flushed && s.latency_ns != 0) limit = saturating_sub(s.last_input_t_ns, s.latency_ns);
+        return has_work<K + 1, N>(limit);
     }
     return false;
 }
@@ -458,7 +368,7 @@ void Scheduler::release_consumed() {
     for (size_t q = 0; q < queues_.size(); ++q) {
         RecordQueue::Seq oldest_unread = queues_[q].end();
         for (const EdgeFifo* edge : readers_[q])
-            if (!edge->empty()) oldest_unread = std::min(oldest_unread, edge->front().seq);
+            if (!edge->empty()) oldest_unread = std::min(oldest_unread, queues_[q].seq_of(edge->front()));
         queues_[q].release_until(oldest_unread);
     }
 }

@@ -38,7 +38,15 @@
 #include "diagnostics.hpp"
 #include "edge_fifo.hpp"
 #include "output_queue.hpp"
+#include "record_checks.hpp"
 #include "record_queue.hpp"
+
+// The per-record path is a few calls deep; these are inlined into it.
+#if defined(__GNUC__)
+#define PEDNAV_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define PEDNAV_ALWAYS_INLINE inline
+#endif
 
 namespace pednav::engine {
 
@@ -62,6 +70,7 @@ struct Stage {
     const pnp_descriptor_t* descriptor = nullptr;
     const pnp_node_ops_t* ops = nullptr;
     void* self = nullptr;
+    decltype(pnp_node_ops_t::process) process = nullptr;  // ops->process
     int64_t latency_ns = 0;
 
     // What the config says to do when it fails or is slow (config.hpp).
@@ -80,6 +89,7 @@ struct Stage {
     // What the sink does with each record type the stage produces.
     struct Emission {
         uint32_t min_size = 0;   // 0: the stage does not produce the type (or it is unknown)
+        ValuesCheck values_ok = nullptr;  // record_values_ok for the type
         bool stored = false;     // a later or earlier stage reads it: into the stage's queue
         bool to_output = false;  // the stage is its last producer: to the output queue (if in the mask)
     };
@@ -152,46 +162,58 @@ public:
     const std::vector<std::unique_ptr<Stage>>& stages() const { return stages_; }
     uint64_t records_in() const { return records_in_; }
 
-    // Called by the sink trampoline.
+    // The sink (stage_sink.cpp): checks a plugin's record and stores it.
     pn_status_t accept(Stage& stage, const pn_record_header_t* record);
 
 private:
-    // Where a record of one type from one queue goes: the edges that carry it.
+    // Where a record of one type from one queue goes: the edges that carry
+    // it, forward ones (whose reader's next forward time it may advance) and
+    // feedback ones (whose reader's pending count it raises).
     struct Route {
-        struct Reader {
+        struct Forward {
             EdgeFifo* fifo;
-            Stage* stage;
-            bool feedback;
+            int64_t* next_forward_t_ns;  // the reader's
         };
-        Reader readers[kRoleCount];
-        uint32_t count = 0;
+        struct Feedback {
+            EdgeFifo* fifo;
+            uint32_t* feedback_pending;  // the reader's
+        };
+        Forward forward[kRoleCount];
+        Feedback feedback[kRoleCount];
+        uint32_t forward_count = 0, feedback_count = 0;
     };
+
+    static pn_status_t sink_emit(const pnp_sink_t* sink, const pn_record_header_t* record) noexcept;
+    pn_status_t refuse_record(Stage& s, const pn_record_header_t* r);  // says why accept() refused r
+    pn_status_t refuse(Stage& s, pn_status_t status);  // logs s.sink_problem as misbehaviour
+    void warn_outputs_dropped() noexcept;
 
     void wire();
     // Copies a record into queue q and onto the edges that read its type.
     void store(int q, const pn_record_header_t* r);
+    void grow_queue(int q);  // and re-points the edges into it
     void drain();
-    void drain_from(size_t k, int64_t limit);
-    // Whether drain_from(k, limit) would call any plugin: some stage from k on
-    // has feedback, or a forward record within the limit its upstream gives it.
-    bool has_work(size_t k, int64_t limit) const;
-    bool deliver_feedback(Stage& s);
+    template <int K, int N>
+    void drain_level(int64_t limit);
+    template <int K, int N>
+    bool has_work(int64_t limit) const;
+    void deliver_feedback(Stage& s);
     void deliver_forward(Stage& s, int64_t t_ns);
     void call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count);
+    void call_process_timed(Stage& s, const pn_record_header_t* const* records, uint32_t count, pn_error_t& err);
     void call_flush(Stage& s);
     void report_failure(Stage& s, pn_status_t status, const pn_error_t& err, const char* during);
     void check_budget(Stage& s, int64_t took_ns, const char* during);
     void stop(const Stage& s, pn_status_t status, const std::string& message);
-    pn_status_t refuse(Stage& s, pn_status_t status);  // logs s.sink_problem as misbehaviour
     void release_consumed();
     int64_t checked_latency(const Stage& s) const;
-    void warn_outputs_dropped() noexcept;
 
     std::vector<std::unique_ptr<Stage>> stages_;
+    Stage* stage_at_[kRoleCount] = {};     // stages_[k].get()
     std::vector<RecordQueue> queues_;      // 0 = app, k+1 = stage k
     std::vector<uint64_t> queue_wanted_;   // union of reader masks per queue
     std::vector<std::array<Route, PN_REC_TYPE_COUNT>> routes_;  // per queue, per type
-    std::vector<std::vector<const EdgeFifo*>> readers_;        // per queue: every edge reading it
+    std::vector<std::vector<EdgeFifo*>> readers_;        // per queue: every edge reading it
     bool flushed_ = false;                  // some stage has flushed since the last push
     uint64_t final_producer_mask_[kRoleCount] = {};  // per stage: types it is the last producer of
     OutputQueue outputs_;

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: Apache-2.0
+// Storing a record: copied into its queue (stamped with the queue's number
+// unless it is the app's), then entered on every edge that reads its type,
+// each reader's next forward time or pending feedback updated. Inline in the
+// two places that store: the app's push (queue 0) and the sink (queue k+1).
+#pragma once
+
+#include "scheduler.hpp"
+
+namespace pednav::engine {
+
+PEDNAV_ALWAYS_INLINE void Scheduler::store(int q, const pn_record_header_t* r) {
+    RecordQueue& queue = queues_[q];
+    if (queue.full()) grow_queue(q);  // the edges grow with it: none can be full
+    const Route& route = routes_[q][r->type];
+    pn_record_header_t* slot = queue.next_slot();
+    copy_record(slot, r);
+    if (q) slot->source_id = static_cast<uint32_t>(q);  // app records keep the app's
+    queue.append();
+    const int64_t t = r->t_ns;
+    for (const Route::Forward *e = route.forward, *end = e + route.forward_count; e != end; ++e) {
+        e->fifo->push(slot);
+        if (t < *e->next_forward_t_ns) *e->next_forward_t_ns = t;
+    }
+    for (const Route::Feedback *e = route.feedback, *end = e + route.feedback_count; e != end; ++e) {
+        e->fifo->push(slot);
+        ++*e->feedback_pending;
+    }
+}
+
+}  // namespace pednav::engine
