@@ -37,12 +37,20 @@ public:
     void push(Record record) { ring_[tail_++ & mask_] = record; }
 
     // Appends to batch[count ..] the records at the front whose time is
-    // t_ns, while count < max; returns the new count.
-    uint32_t take_at(int64_t t_ns, Record* batch, uint32_t count, uint32_t max) {
+    // t_ns, while count < max; returns the new count, and lowers `next` to
+    // the time of the record then at the front, if any.
+    uint32_t take_at(int64_t t_ns, Record* batch, uint32_t count, uint32_t max, int64_t& next) {
         uint64_t h = head_;
         const uint64_t end = tail_;
         const Record* ring = ring_.data();
-        while (h != end && count < max && ring[h & mask_]->t_ns == t_ns) batch[count++] = ring[h++ & mask_];
+        for (; h != end; ++h) {
+            const Record r = ring[h & mask_];
+            if (r->t_ns != t_ns || count == max) {
+                if (r->t_ns < next) next = r->t_ns;
+                break;
+            }
+            batch[count++] = r;
+        }
         head_ = h;
         return count;
     }

@@ -50,8 +50,7 @@ public:
     bool pop(pn_output_t* out) {
         const uint64_t head = head_.load(std::memory_order_relaxed);
         if (head == tail_.load(std::memory_order_acquire)) return false;
-        const pn_output_t& s = slots_[head_index_];
-        std::memcpy(out, &s, s.header.struct_size);
+        copy_record(out, &slots_[head_index_].header);
         if (++head_index_ == slots_.size()) head_index_ = 0;
         head_.store(head + 1, std::memory_order_release);
         return true;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 namespace pednav::engine {
@@ -203,11 +204,24 @@ bool baro_ok(const pn_record_header_t* h) {
 bool gait_phase_ok(const pn_record_header_t* h) {
     return sum_finite(&reinterpret_cast<const pn_gait_phase_t*>(h)->statistic, 1) || exact(h);
 }
+// A covariance of zeros ("unknown", as pn_types.h allows) passes every
+// check of Checker::semi_definite (+0 and -0 alike): told by one OR over its
+// bits, without the sign.
+bool all_zero(const double* c, int n) {
+    uint64_t bits = 0;
+    for (int i = 0; i < n; ++i) {
+        uint64_t b;
+        std::memcpy(&b, &c[i], sizeof b);
+        bits |= b;
+    }
+    return (bits << 1) == 0;
+}
+
 bool attitude_ok(const pn_record_header_t* h) {
     auto* r = reinterpret_cast<const pn_attitude_t*>(h);
     Checker<false> c;
     return (sum_finite(r->q_enu_from_body, 17) && c.unit_norm("", r->q_enu_from_body) &&
-            c.semi_definite("", r->cov_attitude_rad2)) ||
+            (all_zero(r->cov_attitude_rad2, 9) || c.semi_definite("", r->cov_attitude_rad2))) ||
            exact(h);
 }
 bool attitude_correction_ok(const pn_record_header_t* h) {

@@ -33,6 +33,7 @@ void Stage::clear_segment() {
     flushed = false;
     last_stored_t_ns = INT64_MIN;
     last_input_t_ns = INT64_MIN;
+    decided_until_t_ns = INT64_MIN;
     for (auto& t : last_emitted_t_ns) t = INT64_MIN;
     for (auto& in : forward) in.fifo.clear();
     for (auto& in : feedback) in.fifo.clear();
@@ -120,9 +121,15 @@ void Scheduler::wire() {
         Stage& s = *stages_[k];
         for (pn_record_type_t t = 0; t < PN_REC_TYPE_COUNT; ++t) {
             const uint64_t bit = PN_REC_MASK(t);
-            if (!(s.descriptor->produces & bit)) continue;
-            s.emits[t] = Stage::Emission{min_record_size(t), values_check_for(t), (queue_wanted_[k + 1] & bit) != 0,
-                                         (final_producer_mask_[k] & bit) != 0};
+            if (!(s.descriptor->produces & bit) || !min_record_size(t)) continue;
+            Stage::Emission& e = s.emits[t];
+            e.min_size = min_record_size(t);
+            e.to_output = (final_producer_mask_[k] & bit) != 0;
+            e.values_ok = values_check_for(t);
+            if (queue_wanted_[k + 1] & bit) {
+                e.queue = &queues_[k + 1];
+                e.route = &routes_[k + 1][t];
+            }
         }
     }
     for (auto& s : stages_) s->latency_ns = checked_latency(*s);
@@ -141,7 +148,7 @@ void Scheduler::push(const pn_record_header_t* r) {
         flushed_ = false;
     }
     ++records_in_;
-    if (queue_wanted_[0] & PN_REC_MASK(r->type)) store(0, r);
+    if (queue_wanted_[0] & PN_REC_MASK(r->type)) store(queues_[0], routes_[0][r->type], r, 0);
     // Release app records strictly before the newest time (see header); a
     // record at the same time as the previous one releases nothing new.
     if (r->t_ns > last_app_t_ns_) {
@@ -214,13 +221,11 @@ PEDNAV_ALWAYS_INLINE void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
     const pn_record_header_t* batch[kMaxBatch];
     uint32_t count = 0;
     int64_t next = kInf;
-    for (Stage::Input *in = s.forward.data(), *end = in + s.forward.size(); in != end; ++in) {
-        count = in->fifo.take_at(t_ns, batch, count, kMaxBatch);
-        const int64_t front = in->fifo.front_t_ns();
-        next = front < next ? front : next;
-    }
+    for (Stage::Input *in = s.forward.data(), *end = in + s.forward.size(); in != end; ++in)
+        count = in->fifo.take_at(t_ns, batch, count, kMaxBatch, next);
     s.next_forward_t_ns = next;
     s.last_input_t_ns = t_ns;
+    s.decided_until_t_ns = saturating_sub(t_ns, s.latency_ns);
     call_process(s, batch, count);
 }
 
@@ -325,7 +330,7 @@ void Scheduler::drain() {
 // A stage below with nothing to do is not entered (has_work): the calls made
 // are those of the full recursion, in its order.
 template <int K, int N>
-void Scheduler::drain_level(int64_t limit) {
+PEDNAV_ALWAYS_INLINE void Scheduler::drain_level(int64_t limit) {
     Stage& s = *stage_at_[K];
     // A zero-latency (or flushed) stage has emitted everything about the
     // times before its next input; a stage with look-ahead L only what is
@@ -334,16 +339,19 @@ void Scheduler::drain_level(int64_t limit) {
     const bool passes_limit = s.flushed || s.latency_ns == 0;
     for (;;) {
         if (stopped_) return;
-        const bool had_feedback = s.feedback_pending != 0;  // then some feedback edge has records
-        if (had_feedback) deliver_feedback(s);
+        if (s.feedback_pending) deliver_feedback(s);  // then some feedback edge has records
         const int64_t t = s.next_forward_t_ns <= limit ? s.next_forward_t_ns : kInf;
         if constexpr (K + 1 < N) {
             const int64_t below =
-                passes_limit ? (t == kInf ? limit : t - 1) : saturating_sub(s.last_input_t_ns, s.latency_ns);
+                passes_limit ? (t == kInf ? limit : t - 1) : s.decided_until_t_ns;
             if (has_work<K + 1, N>(below)) drain_level<K + 1, N>(below);
         }
         if (t == kInf) {
-            if (had_feedback || s.feedback_pending) continue;
+            // The full recursion also goes round once more after delivering
+            // feedback; that round calls nothing: no forward record can have
+            // come (only earlier stages feed this one), and the stages below
+            // are as the round before left them.
+            if (s.feedback_pending) continue;
             return;
         }
         deliver_forward(s, t);
@@ -358,7 +366,7 @@ bool Scheduler::has_work(int64_t limit) const {
     if (s.feedback_pending || s.next_forward_t_ns <= limit) return true;
     if constexpr (K + 1 < N) {
         // Nothing within the limit: what the stage passes on, as drain_level would.
-        if (!s.flushed && s.latency_ns != 0) limit = saturating_sub(s.last_input_t_ns, s.latency_ns);
+        if (!s.flushed && s.latency_ns != 0) limit = s.decided_until_t_ns;
         return has_work<K + 1, N>(limit);
     }
     return false;

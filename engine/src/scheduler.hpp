@@ -52,6 +52,23 @@ namespace pednav::engine {
 
 class Scheduler;
 
+// Where a record of one type from one queue goes: the edges that carry it,
+// forward ones (whose reader's next forward time it may advance) and feedback
+// ones (whose reader's pending count it raises).
+struct Route {
+    struct Forward {
+        EdgeFifo* fifo;
+        int64_t* next_forward_t_ns;  // the reader's
+    };
+    struct Feedback {
+        EdgeFifo* fifo;
+        uint32_t* feedback_pending;  // the reader's
+    };
+    Forward forward[kRoleCount];
+    Feedback feedback[kRoleCount];
+    uint32_t forward_count = 0, feedback_count = 0;
+};
+
 // One plugin instance in the pipeline. It owns the instance: destroying the
 // Stage destroys it, so no path (a constructor that throws halfway included)
 // can leak one.
@@ -87,11 +104,13 @@ struct Stage {
     std::vector<Input> forward;
     std::vector<Input> feedback;
     // What the sink does with each record type the stage produces.
+    static constexpr uint32_t kUndeclared = UINT32_MAX;  // min_size of a type the stage does not produce
     struct Emission {
-        uint32_t min_size = 0;   // 0: the stage does not produce the type (or it is unknown)
+        uint32_t min_size = kUndeclared;  // smallest struct_size accepted
+        bool to_output = false;           // the stage is the type's last producer: to the output queue (if in the mask)
         ValuesCheck values_ok = nullptr;  // record_values_ok for the type
-        bool stored = false;     // a later or earlier stage reads it: into the stage's queue
-        bool to_output = false;  // the stage is its last producer: to the output queue (if in the mask)
+        RecordQueue* queue = nullptr;     // the stage's queue, when some stage reads the type; else nullptr
+        const Route* route = nullptr;     // then the edges of the type in that queue
     };
     Emission emits[PN_REC_TYPE_COUNT];
 
@@ -102,6 +121,7 @@ struct Stage {
     int64_t last_stored_t_ns = INT64_MIN;  // newest record put into its queue
     int64_t last_emitted_t_ns[PN_REC_TYPE_COUNT];  // newest accepted record per type
     int64_t last_input_t_ns = INT64_MIN;  // newest forward record consumed
+    int64_t decided_until_t_ns = INT64_MIN;  // last_input_t_ns - latency_ns: everything about times to here is out
     // Why the sink last refused a record. Fixed storage: the sink runs inside
     // noexcept plugin calls and must not allocate to describe a refusal.
     char sink_problem[256] = {};
@@ -166,31 +186,15 @@ public:
     pn_status_t accept(Stage& stage, const pn_record_header_t* record);
 
 private:
-    // Where a record of one type from one queue goes: the edges that carry
-    // it, forward ones (whose reader's next forward time it may advance) and
-    // feedback ones (whose reader's pending count it raises).
-    struct Route {
-        struct Forward {
-            EdgeFifo* fifo;
-            int64_t* next_forward_t_ns;  // the reader's
-        };
-        struct Feedback {
-            EdgeFifo* fifo;
-            uint32_t* feedback_pending;  // the reader's
-        };
-        Forward forward[kRoleCount];
-        Feedback feedback[kRoleCount];
-        uint32_t forward_count = 0, feedback_count = 0;
-    };
-
     static pn_status_t sink_emit(const pnp_sink_t* sink, const pn_record_header_t* record) noexcept;
     pn_status_t refuse_record(Stage& s, const pn_record_header_t* r);  // says why accept() refused r
     pn_status_t refuse(Stage& s, pn_status_t status);  // logs s.sink_problem as misbehaviour
     void warn_outputs_dropped() noexcept;
 
     void wire();
-    // Copies a record into queue q and onto the edges that read its type.
-    void store(int q, const pn_record_header_t* r);
+    // Copies a record into queue number q and onto the edges that read its
+    // type there (route).
+    void store(RecordQueue& queue, const Route& route, const pn_record_header_t* r, uint32_t q);
     void grow_queue(int q);  // and re-points the edges into it
     void drain();
     template <int K, int N>

@@ -9,13 +9,12 @@
 
 namespace pednav::engine {
 
-PEDNAV_ALWAYS_INLINE void Scheduler::store(int q, const pn_record_header_t* r) {
-    RecordQueue& queue = queues_[q];
-    if (queue.full()) grow_queue(q);  // the edges grow with it: none can be full
-    const Route& route = routes_[q][r->type];
+PEDNAV_ALWAYS_INLINE void Scheduler::store(RecordQueue& queue, const Route& route, const pn_record_header_t* r,
+                                           uint32_t q) {
+    if (queue.full()) grow_queue(static_cast<int>(q));  // the edges grow with it: none can be full
     pn_record_header_t* slot = queue.next_slot();
     copy_record(slot, r);
-    if (q) slot->source_id = static_cast<uint32_t>(q);  // app records keep the app's
+    if (q) slot->source_id = q;  // app records keep the app's
     queue.append();
     const int64_t t = r->t_ns;
     for (const Route::Forward *e = route.forward, *end = e + route.forward_count; e != end; ++e) {

@@ -22,8 +22,9 @@ double seconds(int64_t t_ns) { return static_cast<double>(t_ns) * 1e-9; }
 }  // namespace
 
 PEDNAV_ALWAYS_INLINE pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
-    if (!r || r->type >= PN_REC_TYPE_COUNT || s.emits[r->type].min_size == 0) return refuse_record(s, r);
+    if (!r || r->type >= PN_REC_TYPE_COUNT) return refuse_record(s, r);
     const Stage::Emission& e = s.emits[r->type];
+    // An undeclared type has min_size kUndeclared: refused by the first comparison.
     if (r->struct_size < e.min_size || r->struct_size > PN_RECORD_MAX_SIZE || !e.values_ok(r))
         return refuse_record(s, r);
     // Time order per type, whoever reads the type (a later stage or only the
@@ -31,15 +32,14 @@ PEDNAV_ALWAYS_INLINE pn_status_t Scheduler::accept(Stage& s, const pn_record_hea
     // merge by time.
     const int64_t t = r->t_ns;
     int64_t& last_of_type = s.last_emitted_t_ns[r->type];
-    if (t < last_of_type || (e.stored && t < s.last_stored_t_ns)) return refuse_record(s, r);
-    const int q = s.index + 1;
-    if (e.stored) {
+    if (t < last_of_type || (e.queue && t < s.last_stored_t_ns)) return refuse_record(s, r);
+    const uint32_t q = static_cast<uint32_t>(s.index + 1);
+    if (e.queue) {
         s.last_stored_t_ns = t;
-        store(q, r);
+        store(*e.queue, *e.route, r, q);
     }
     last_of_type = t;
-    if (e.to_output && (output_mask() & PN_REC_MASK(r->type)) && !outputs_.push(r, static_cast<uint32_t>(q)))
-        warn_outputs_dropped();
+    if (e.to_output && (output_mask() & PN_REC_MASK(r->type)) && !outputs_.push(r, q)) warn_outputs_dropped();
     ++s.records_out;
     return PN_OK;
 }
@@ -64,7 +64,7 @@ pn_status_t Scheduler::refuse_record(Stage& s, const pn_record_header_t* r) {
         return refuse(s, PN_E_INVALID_ARGUMENT);
     }
     const Stage::Emission e = r->type < PN_REC_TYPE_COUNT ? s.emits[r->type] : Stage::Emission{};
-    if (e.min_size == 0) {
+    if (e.min_size == Stage::kUndeclared) {
         std::snprintf(why, n, "emitted a record of type %u (%s) that its descriptor does not declare in produces",
                       r->type, record_type_name(r->type));
         return refuse(s, PN_E_INVALID_ARGUMENT);
@@ -73,7 +73,7 @@ pn_status_t Scheduler::refuse_record(Stage& s, const pn_record_header_t* r) {
         std::snprintf(why, n, "emitted a %s record with struct_size %u", record_type_name(r->type), r->struct_size);
         return refuse(s, PN_E_INVALID_ARGUMENT);
     }
-    if (!record_values_ok(r)) {
+    if (!e.values_ok(r)) {
         char value[128];
         format_value_problem(find_value_problem(r), value, sizeof value);
         std::snprintf(why, n, "emitted a %s record at t=%.6f s whose %s", record_type_name(r->type), seconds(r->t_ns),
