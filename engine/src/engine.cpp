@@ -10,6 +10,7 @@
 #include "params_schema.hpp"
 #include "pipeline_check.hpp"
 #include "record_checks.hpp"
+#include "scheduler_store.hpp"
 
 namespace pednav::engine {
 

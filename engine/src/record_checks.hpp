@@ -11,7 +11,7 @@ namespace pednav::engine {
 
 // Smallest struct_size accepted for a record type (the 1.0 size), 0 if unknown.
 inline uint32_t min_record_size(pn_record_type_t type) {
-    constexpr uint32_t kMinSize[PN_REC_TYPE_COUNT] = {
+    static constexpr uint32_t kMinSize[PN_REC_TYPE_COUNT] = {
         0,  // no type 0
         PN_IMU_MIN_SIZE, PN_MAG_MIN_SIZE, PN_BARO_MIN_SIZE, PN_GNSS_MIN_SIZE, PN_GAIT_PHASE_MIN_SIZE, PN_STEP_MIN_SIZE,
         PN_ATTITUDE_MIN_SIZE, PN_ATTITUDE_CORRECTION_MIN_SIZE, PN_POSITION_MIN_SIZE, PN_STRIDE_MIN_SIZE};

@@ -141,23 +141,6 @@ int64_t Scheduler::latency_ns() const {
     return sum;
 }
 
-void Scheduler::push(const pn_record_header_t* r) {
-    if (stopped_) return;
-    if (flushed_) {
-        for (auto& s : stages_) s->flushed = false;
-        flushed_ = false;
-    }
-    ++records_in_;
-    if (queue_wanted_[0] & PN_REC_MASK(r->type)) store(queues_[0], routes_[0][r->type], r, 0);
-    // Release app records strictly before the newest time (see header); a
-    // record at the same time as the previous one releases nothing new.
-    if (r->t_ns > last_app_t_ns_) {
-        app_limit_ns_ = r->t_ns - 1;
-        last_app_t_ns_ = r->t_ns;
-        drain();
-    }
-}
-
 void Scheduler::flush() {
     app_limit_ns_ = kInf;
     drain();
