@@ -208,7 +208,7 @@ PEDNAV_ALWAYS_INLINE void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
         count = in->fifo.take_at(t_ns, batch, count, kMaxBatch, next);
     s.next_forward_t_ns = next;
     s.last_input_t_ns = t_ns;
-    s.decided_until_t_ns = saturating_sub(t_ns, s.latency_ns);
+    if (s.latency_ns) s.decided_until_t_ns = saturating_sub(t_ns, s.latency_ns);  // else never read
     call_process(s, batch, count);
 }
 
