@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "path_heading.hpp"
 #include "profiles.hpp"
+#include "trunk_path.hpp"
 
 namespace pednav::sim::detail {
 
@@ -99,7 +101,7 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
         s.walking = true;
         s.t0 = ph.t0_s - 0.5 * kWarpS;
         spans_.back().t1 = s.t0;
-        std::vector<double> kt{ph.t0_s}, kx, ky, kz, kyaw, kphase{0.0};
+        std::vector<double> kt{ph.t0_s}, kx, ky, kz, kphase{0.0};
         std::vector<double> step_scale;  // per step (knot interval): bounce amplitude over bounce_m
         const Eigen::Vector3d p0 = plan.prints[ph.from].p_enu_m;
         std::vector<Eigen::Vector3d> kp{p0};
@@ -129,17 +131,12 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
             t_prev = q.t1_s;
         }
         s.t1 = t_prev + 0.5 * kWarpS;
-        // Knot headings: the direction of the chord through the neighbours, unwrapped.
-        for (size_t k = 0; k < kp.size(); ++k) {
-            const size_t lo = k == 0 ? 0 : k - 1, hi = std::min(kp.size() - 1, k + 1);
-            const Eigen::Vector3d d = kp[hi] - kp[lo];
-            double yaw = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) : yaw_now;
-            yaw = yaw_now + wrap_pi(yaw - yaw_now);
-            kyaw.push_back(yaw);
-            yaw_now = yaw;
-            kx.push_back(kp[k].x());
-            ky.push_back(kp[k].y());
-            kz.push_back(kp[k].z());
+        // The trunk's path: the landings smoothed (the centre of mass rounds a corner), heights kept.
+        const std::vector<Eigen::Vector3d> kc = trunk_knots(kp);
+        for (size_t k = 0; k < kc.size(); ++k) {
+            kx.push_back(kc[k].x());
+            ky.push_back(kc[k].y());
+            kz.push_back(kc[k].z());
             if (k > 0) kphase.push_back(static_cast<double>(k));
         }
         for (size_t k = 1; k < kt.size(); ++k) steps_.push_back(kt[k]);
@@ -147,7 +144,10 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
         s.x = ClampedSpline(kt, kx);
         s.y = ClampedSpline(kt, ky);
         s.z = ClampedSpline(kt, kz);
-        s.yaw = ClampedSpline(kt, kyaw);
+        // The yaw: the path's own direction.
+        const HeadingSamples heading = path_heading(kt, kc, s.x, s.y, yaw_now);
+        yaw_now = heading.yaw_rad.back();
+        s.yaw = ClampedSpline(heading.t_s, heading.yaw_rad);
         s.phase = ClampedSpline(kt, kphase);
         // The bounce's scale against the phase: each step's value at its middle, held to both ends.
         std::vector<double> sphase{0.0}, sscale{step_scale.front()};

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// Chest- or waist-mounted sensor trajectory: forward progression through the
-// walk's step points (a clamped cubic spline per walking bout), vertical bounce
-// at the step frequency, lateral sway at half of it, small pitch and roll
-// oscillations, standing still (and turning on the spot) during pauses.
+// Chest- or waist-mounted sensor trajectory: forward progression along the
+// centre of mass' path, the walk's step points smoothed (trunk_path.hpp; a
+// clamped cubic spline per walking bout), facing along that path
+// (path_heading.hpp), vertical bounce at the step frequency, lateral sway at
+// half of it, small pitch and roll oscillations, standing still (and turning
+// on the spot) during pauses.
 //
 // The bounce follows the inverted pendulum: over a level step of length L the
 // trunk rides on the stance leg (length l) and rises by
@@ -78,7 +80,7 @@ private:
         int segment = 0;
         std::vector<int> segment_at_knot;
         std::vector<double> knot_t;
-        ClampedSpline x, y, z, yaw, phase;  // bout
+        ClampedSpline x, y, z, yaw, phase;  // bout (yaw on its own knots: path_heading.hpp)
         ClampedSpline bounce_scale;         // bout: the bounce amplitude over bounce_m, against the phase
         double ramp_in_s = 0.5, ramp_out_s = 0.5;
     };
