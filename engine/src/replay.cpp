@@ -190,7 +190,20 @@ ReplayResult& ReplaySession::finish() {
     result_.describe_json = describe(engine_);
     result_.has_origin = pn_engine_get_origin(engine_, &result_.origin) == PN_OK;
     const auto d = nlohmann::json::parse(result_.describe_json, nullptr, false);
-    if (!d.is_discarded()) result_.plugin_failures = d["counters"].value("plugin_failures", uint64_t{0});
+    if (!d.is_discarded()) {
+        result_.plugin_failures = d["counters"].value("plugin_failures", uint64_t{0});
+        // What the engine and its plugins warned of (a plugin's log at warning level, a refused
+        // output, a full output queue), which no log callback here prints: listed as the engine
+        // kept them, with the count of those it did not keep.
+        const nlohmann::json& kept = d["warnings"];
+        if (kept.is_array())
+            for (const auto& w : kept)
+                if (w.is_string()) result_.warnings.push_back(w.get<std::string>());
+        const uint64_t count = d["counters"].value("warnings", uint64_t{0});
+        if (kept.is_array() && count > kept.size())
+            result_.warnings.push_back(std::to_string(count - kept.size()) + " more engine warnings not listed (" +
+                                       std::to_string(count) + " in all)");
+    }
     return result_;
 }
 

@@ -111,9 +111,10 @@ TEST_CASE("issue 13: simulated chest and handheld walks: floors from the baromet
             // At most one step more per walking bout (the first peak of a bout, the start's transient).
             CHECK(s.steps >= s.true_steps);
             CHECK(s.steps <= s.true_steps + 5);
-            // Uncalibrated (the height default): the simulated bounce does not grow with the step, so
-            // the figure eight's shorter steps read long-ish and short ones short; within 16 %.
-            CHECK(std::fabs(s.distance_error_pct) < (r == "figure_eight" ? 16.0 : 9.0));
+            // Uncalibrated (the height default): the chest preset's steps read 6.5-7.6 % long, the
+            // handheld's 0.6-1.7 %, on every route (the figure eight's 12 % longer strides too: the
+            // simulated bounce and cadence grow with the step).
+            CHECK(std::fabs(s.distance_error_pct) < 9.0);
             if (r == "corridor_loop") CHECK(s.closure_m < 0.03 * s.true_distance_m);
             CHECK(s.metrics.horizontal_m.p75 < (r == "building_tour" ? 8.0 : 4.5));
         }
@@ -124,10 +125,10 @@ TEST_CASE("issue 13: calibrated on one simulated walk, the distance of the other
         CAPTURE(mount);
         const chest_eval::Calibrated c =
             chest_eval::calibrate_on_sims(preset(mount), mount, {sim_walk(mount, "corridor_loop", 9)}, kPlugins);
-        for (const std::string route : {"corridor_loop", "stairs", "building_tour"}) {
+        for (const std::string route : {"corridor_loop", "stairs", "building_tour", "figure_eight"}) {
             CAPTURE(route);
             const WalkScore s = chest_eval::score_sim(sim_walk(mount, route), c.config_json, kPlugins);
-            CHECK(std::fabs(s.distance_error_pct) < 3.0);
+            CHECK(std::fabs(s.distance_error_pct) < 3.0);  // measured within 1.0 %
         }
     }
 }

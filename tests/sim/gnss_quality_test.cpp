@@ -47,7 +47,7 @@ TEST_CASE("gnss quality: the default is good outdoors and none indoors, bit for 
     o.mount = "waist";
     const SimOutput a = simulate(builtin_route("outdoor_indoor"), o);
     const SimOutput b = simulate(explicit_route, o);
-    REQUIRE(a.gnss.size() == 118);
+    REQUIRE(a.gnss.size() == 119);
     REQUIRE(a.gnss.size() == b.gnss.size());
     CHECK(std::memcmp(a.gnss.data(), b.gnss.data(), a.gnss.size() * sizeof(pn_gnss_t)) == 0);
     CHECK(std::memcmp(a.imu.data(), b.imu.data(), a.imu.size() * sizeof(pn_imu_t)) == 0);

@@ -61,7 +61,7 @@ TEST_CASE("gnss.csv: the GNSS CSV reader gets the simulated fixes back") {
     CHECK(log.format == "csv");
     CHECK(log.issues.size() == 1);  // the gap indoors
     REQUIRE(log.gnss.size() == out.gnss.size());
-    REQUIRE(out.gnss.size() == 118);
+    REQUIRE(out.gnss.size() == 119);
     double worst_deg = 0, worst_h = 0, worst_acc = 0, worst_vel = 0;
     for (size_t k = 0; k < out.gnss.size(); ++k) {
         const pn_gnss_t& a = log.gnss[k];

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include <pednav_sim/simulate.hpp>
 
 #include "cli_common.hpp"
+#include "pednav_strict_json/strict_json.hpp"
 
 namespace {
 
@@ -29,6 +31,11 @@ constexpr const char* kUsage =
     "              (default: handheld 0.02, chest and waist 0)\n"
     "  --jitter    irregular sample times: each sample moved by up to +-S seconds (below half the interval)\n"
     "  --gnss-jump  multipath: from T s for DURATION s every fix is EAST, NORTH metres off (repeatable)\n";
+
+bool is_builtin(const std::string& name) {
+    const std::vector<std::string> names = pednav::sim::builtin_route_names();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
 
 }  // namespace
 
@@ -93,11 +100,19 @@ int pednav_cmd_sim(const std::vector<std::string>& args) {
     if (route_arg.empty() || out_dir.empty())
         throw pednav::cli::UsageError("--route and --out are required");
     try {
+        // A route file when one of that name is there, else a built-in route (a
+        // folder named like a built-in route is not a route file).
         Route route;
-        std::ifstream in(route_arg);
-        if (in) {
-            route = parse_route(nlohmann::json::parse(in));
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(route_arg, ec)) {
+            try {
+                route = parse_route(pednav::strict_json::parse(pednav::cli::read_text_file(route_arg)));
+            } catch (const pednav::strict_json::Error& e) {
+                throw std::runtime_error(route_arg + (e.pointer.empty() ? "" : ":" + e.pointer) + ": " + e.what());
+            }
             if (route.name.empty()) route.name = route_arg;
+        } else if (std::filesystem::exists(route_arg, ec) && !is_builtin(route_arg)) {
+            throw std::runtime_error(route_arg + ": not a route file (a pednav-route/1 JSON file or a built-in route name)");
         } else {
             route = builtin_route(route_arg);
         }

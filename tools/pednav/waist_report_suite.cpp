@@ -118,8 +118,8 @@ void run_outage(const sim::Route& route, const std::string& waist,
         sim::SimOutput out = sim::simulate(route, waist_options(seed, true));
         if (block)
             waist_eval::remove_fixes(out, waist_eval::kBlockOutageStartS, waist_eval::kBlockOutageEndS);
-        const auto errors =
-            waist_eval::output_errors(waist_eval::run_sim_waist(out, route, waist, plugin_dirs), out);
+        const ReplayResult result = waist_eval::run_sim_waist(out, route, waist, plugin_dirs);
+        const auto errors = waist_eval::output_errors(result, out);
         const auto gap = waist_eval::longest_gnss_gap_s(out.gnss);
         const waist_eval::Drift d = waist_eval::drift_in(errors, gap.first, gap.second);
         int n = 0;
@@ -140,9 +140,27 @@ void run_outage(const sim::Route& route, const std::string& waist,
                      step_in_m = waist_eval::true_step_length_m(out, gap.first, gap.second);
         std::printf(
             "    its sources: track scale %+.2f %%, rotation %+.2f deg; without the scale %.2f %%; true step "
-            "%.3f m in the outage, %.3f m in the 30 s before (%+.2f %%)\n",
+            "%.3f m in the outage, %.3f m in the 30 s before (%+.2f %%); learnt steps in the outage %+.2f %% "
+            "against the true\n",
             d.scale_pct, d.rotation_deg, 100.0 * d.max_without_scale_m / d.walked_m, step_in_m, step_before_m,
-            100.0 * (step_in_m / step_before_m - 1.0));
+            100.0 * (step_in_m / step_before_m - 1.0),
+            waist_eval::stride_length_error_pct(result, out, gap.first, gap.second));
+        // The GNSS-mode error on either side of the outage, with the fixes' own there.
+        const auto gnss_error_between = [&](double t0_s, double t1_s) {
+            double sum = 0;
+            int count = 0;
+            for (const waist_eval::OutputError& e : errors)
+                if (e.source == PN_POSITION_SOURCE_GNSS && e.t_s > t0_s && e.t_s < t1_s)
+                    sum += e.err_h_m, ++count;
+            return count ? sum / count : NAN;
+        };
+        std::printf(
+            "    GNSS mode error before the outage %.2f m (the fixes' own %.2f m), after it %.2f m (%.2f "
+            "m)\n",
+            gnss_error_between(-HUGE_VAL, gap.first),
+            waist_eval::mean_fix_error_m(out, route, -HUGE_VAL, gap.first),
+            gnss_error_between(gap.second, HUGE_VAL),
+            waist_eval::mean_fix_error_m(out, route, gap.second, HUGE_VAL));
         drift.push_back(100.0 * d.max_m / d.walked_m);
         without_scale.push_back(100.0 * d.max_without_scale_m / d.walked_m);
         gnss_err.push_back(err);

@@ -34,7 +34,8 @@ struct ReplayResult {
     std::vector<pn_step_t> steps;          // step detector events
     std::vector<pn_attitude_t> attitudes;  // when keep_attitudes
     std::vector<pn_gait_phase_t> gait_phases;  // when keep_gait_phases
-    std::vector<std::string> warnings;     // input rows rejected, plugin misbehaviour, ...
+    std::vector<std::string> warnings;     // input rows rejected, then what the engine kept of its warnings
+                                           // (plugins' warning-level logs, misbehaviour), and their count
     std::string error;                     // non-empty when the run stopped early; outputs so far are kept
     uint64_t plugin_failures = 0;          // plugin calls that failed (each also in warnings)
     bool stopped = false;                  // a stage's failure policy stopped the pipeline (the last warning says where)

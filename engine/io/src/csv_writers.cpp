@@ -23,6 +23,22 @@ void put_floor(detail::OutFile& out, const pn_position_t& p) {
 // Seconds with nanosecond digits ("%.9f" of the time).
 void put_time(detail::OutFile& out, int64_t t_ns) { out.fixed(static_cast<double>(t_ns) * 1e-9, 9); }
 
+// ",%.6f,%.6f,%.6f" of a vector in metres.
+void put_vector_m(detail::OutFile& out, const double v[3]) {
+    for (int i = 0; i < 3; ++i) {
+        out.put(',');
+        out.fixed(v[i], 6);
+    }
+}
+
+// ",%.9g,%.9g,%.9g,%.9g" of a row-major 3 x 3 covariance's xx, xy, yy and zz.
+void put_covariance(detail::OutFile& out, const double c[9]) {
+    for (int i : {0, 1, 4, 8}) {
+        out.put(',');
+        out.general(c[i], 9);
+    }
+}
+
 }  // namespace
 
 RowWriter::RowWriter(const std::string& path) : out_(std::make_unique<detail::OutFile>(path)) {}
@@ -39,18 +55,12 @@ void TrackCsvWriter::add(const pn_position_t& p) {
     // "%.9f,%.6f,%.6f,%.6f,%.4f,%d,%.9g,%.9g,%.9g,%.9g\n", the floor empty when there is none.
     detail::OutFile& o = out();
     put_time(o, p.header.t_ns);
-    for (double v : p.pos_enu_m) {
-        o.put(',');
-        o.fixed(v, 6);
-    }
+    put_vector_m(o, p.pos_enu_m);
     o.put(',');
     o.fixed(heading_deg(p.heading_rad), 4);
     o.put(',');
     put_floor(o, p);
-    for (int i : {0, 1, 4, 8}) {  // xx, xy, yy, zz
-        o.put(',');
-        o.general(p.cov_enu_m2[i], 9);
-    }
+    put_covariance(o, p.cov_enu_m2);
     o.put('\n');
 }
 
@@ -102,20 +112,14 @@ void StepsCsvWriter::add(const pn_stride_t& s) {
     put_time(o, s.t_start_ns);
     o.put(',');
     put_time(o, s.header.t_ns);
-    for (double v : s.displacement_enu_m) {
-        o.put(',');
-        o.fixed(v, 6);
-    }
+    put_vector_m(o, s.displacement_enu_m);
     o.put(',');
     o.fixed(s.length_m, 6);
     o.put(',');
     o.fixed(s.heading_change_rad * kRadToDeg, 4);
     o.put(',');
     o.text(class_name(s.stride_class));
-    for (int i : {0, 1, 4, 8}) {
-        o.put(',');
-        o.general(s.cov_displacement_m2[i], 9);
-    }
+    put_covariance(o, s.cov_displacement_m2);
     o.put('\n');
 }
 

@@ -6,33 +6,6 @@
 
 namespace pednav::indoor_map {
 
-double orientation(const Point2& a, const Point2& b, const Point2& c) {
-    return (b.e_m - a.e_m) * (c.n_m - a.n_m) - (b.n_m - a.n_m) * (c.e_m - a.e_m);
-}
-
-namespace {
-
-int sign(double v) { return (v > 0) - (v < 0); }
-
-// q on segment [a, b], given the three are collinear.
-bool within_box(const Point2& a, const Point2& b, const Point2& q) {
-    return std::min(a.e_m, b.e_m) <= q.e_m && q.e_m <= std::max(a.e_m, b.e_m) && std::min(a.n_m, b.n_m) <= q.n_m &&
-           q.n_m <= std::max(a.n_m, b.n_m);
-}
-
-}  // namespace
-
-bool segments_intersect(const Point2& p0, const Point2& p1, const Point2& q0, const Point2& q1) {
-    const int d1 = sign(orientation(q0, q1, p0)), d2 = sign(orientation(q0, q1, p1));
-    const int d3 = sign(orientation(p0, p1, q0)), d4 = sign(orientation(p0, p1, q1));
-    if (d1 * d2 < 0 && d3 * d4 < 0) return true;
-    if (d1 == 0 && within_box(q0, q1, p0)) return true;
-    if (d2 == 0 && within_box(q0, q1, p1)) return true;
-    if (d3 == 0 && within_box(p0, p1, q0)) return true;
-    if (d4 == 0 && within_box(p0, p1, q1)) return true;
-    return false;
-}
-
 bool point_in_ring(const Point2& p, const std::vector<Point2>& ring) {
     bool inside = false;
     const size_t n = ring.size();

@@ -60,7 +60,9 @@ WallIndex::WallIndex(const std::vector<WallSegment>& walls, double cell_m_asked)
         std::vector<std::vector<uint32_t>> cells(static_cast<size_t>(g.cols) * g.rows);
         for (const WallSegment* w : list) {
             const auto index = static_cast<uint32_t>(g.segments.size());
-            g.segments.push_back({w->a.e_m, w->a.n_m, w->b.e_m, w->b.n_m});
+            g.segments.push_back({w->a.e_m, w->a.n_m, w->b.e_m, w->b.n_m, std::min(w->a.e_m, w->b.e_m),
+                                  std::max(w->a.e_m, w->b.e_m), std::min(w->a.n_m, w->b.n_m),
+                                  std::max(w->a.n_m, w->b.n_m)});
             // Cells the segment itself passes through (not its whole bounding
             // box: a long diagonal wall would fill a square of cells).
             const Point2 a = w->a, b = w->b;
@@ -104,9 +106,7 @@ bool WallIndex::crosses_in_cell(const FloorGrid& g, int cell, const Point2& p0, 
     const double qn0 = std::min(p0.n_m, p1.n_m), qn1 = std::max(p0.n_m, p1.n_m);
     for (uint32_t k = g.cell_begin[cell]; k < g.cell_begin[cell + 1]; ++k) {
         const Segment& s = g.segments[g.cell_walls[k]];
-        if (std::max(s.ae, s.be) < qe0 || std::min(s.ae, s.be) > qe1 || std::max(s.an, s.bn) < qn0 ||
-            std::min(s.an, s.bn) > qn1)
-            continue;
+        if (s.e_hi < qe0 || s.e_lo > qe1 || s.n_hi < qn0 || s.n_lo > qn1) continue;
         if (segments_intersect(p0, p1, {s.ae, s.an}, {s.be, s.bn})) return true;
     }
     return false;

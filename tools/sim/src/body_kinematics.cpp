@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "path_heading.hpp"
 #include "profiles.hpp"
+#include "trunk_path.hpp"
 
 namespace pednav::sim::detail {
 
@@ -53,9 +55,17 @@ Profile product(const Profile& a, const Profile& b) {
     return {a.f * b.f, a.df * b.f + a.f * b.df, a.ddf * b.f + 2.0 * a.df * b.df + a.f * b.ddf};
 }
 
+// The rise of the trunk over a step of length step_m on a leg of length
+// leg_length_m (the inverted pendulum): l - sqrt(l^2 - (L/2)^2).
+double pendulum_rise_m(double leg_length_m, double step_m) {
+    const double half_m = std::min(0.5 * step_m, leg_length_m);
+    return leg_length_m - std::sqrt(leg_length_m * leg_length_m - half_m * half_m);
+}
+
 }  // namespace
 
 BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(shape) {
+    const double rise_nominal_m = pendulum_rise_m(shape_.leg_length_m, plan.step_nominal_m);
     // Split the foot timeline into pauses (long stances) and walking bouts.
     size_t i = 0;
     double yaw_now = plan.prints[0].yaw_enu_rad;
@@ -91,7 +101,8 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
         s.walking = true;
         s.t0 = ph.t0_s - 0.5 * kWarpS;
         spans_.back().t1 = s.t0;
-        std::vector<double> kt{ph.t0_s}, kx, ky, kz, kyaw, kphase{0.0};
+        std::vector<double> kt{ph.t0_s}, kx, ky, kz, kphase{0.0};
+        std::vector<double> step_scale;  // per step (knot interval): bounce amplitude over bounce_m
         const Eigen::Vector3d p0 = plan.prints[ph.from].p_enu_m;
         std::vector<Eigen::Vector3d> kp{p0};
         s.segment_at_knot.push_back(plan.prints[ph.from].segment);
@@ -106,6 +117,11 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
             }
             // The other foot lands halfway (in time and place), then this foot.
             const Eigen::Vector3d a = plan.prints[q.from].p_enu_m, b = plan.prints[q.to].p_enu_m;
+            const double scale =
+                plan.prints[q.to].kind == StrideKind::level && rise_nominal_m > 0.0
+                    ? pendulum_rise_m(shape_.leg_length_m, 0.5 * (b - a).head<2>().norm()) / rise_nominal_m
+                    : 1.0;
+            step_scale.insert(step_scale.end(), 2, scale);  // both steps of the stride
             kt.push_back(0.5 * (t_prev + q.t1_s));
             kp.emplace_back(0.5 * (a + b));
             s.segment_at_knot.push_back(plan.prints[q.to].segment);
@@ -115,17 +131,12 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
             t_prev = q.t1_s;
         }
         s.t1 = t_prev + 0.5 * kWarpS;
-        // Knot headings: the direction of the chord through the neighbours, unwrapped.
-        for (size_t k = 0; k < kp.size(); ++k) {
-            const size_t lo = k == 0 ? 0 : k - 1, hi = std::min(kp.size() - 1, k + 1);
-            const Eigen::Vector3d d = kp[hi] - kp[lo];
-            double yaw = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) : yaw_now;
-            yaw = yaw_now + wrap_pi(yaw - yaw_now);
-            kyaw.push_back(yaw);
-            yaw_now = yaw;
-            kx.push_back(kp[k].x());
-            ky.push_back(kp[k].y());
-            kz.push_back(kp[k].z());
+        // The trunk's path: the landings smoothed (the centre of mass rounds a corner), heights kept.
+        const std::vector<Eigen::Vector3d> kc = trunk_knots(kp);
+        for (size_t k = 0; k < kc.size(); ++k) {
+            kx.push_back(kc[k].x());
+            ky.push_back(kc[k].y());
+            kz.push_back(kc[k].z());
             if (k > 0) kphase.push_back(static_cast<double>(k));
         }
         for (size_t k = 1; k < kt.size(); ++k) steps_.push_back(kt[k]);
@@ -133,8 +144,20 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
         s.x = ClampedSpline(kt, kx);
         s.y = ClampedSpline(kt, ky);
         s.z = ClampedSpline(kt, kz);
-        s.yaw = ClampedSpline(kt, kyaw);
+        // The yaw: the path's own direction.
+        const HeadingSamples heading = path_heading(kt, kc, s.x, s.y, yaw_now);
+        yaw_now = heading.yaw_rad.back();
+        s.yaw = ClampedSpline(heading.t_s, heading.yaw_rad);
         s.phase = ClampedSpline(kt, kphase);
+        // The bounce's scale against the phase: each step's value at its middle, held to both ends.
+        std::vector<double> sphase{0.0}, sscale{step_scale.front()};
+        for (size_t k = 0; k < step_scale.size(); ++k) {
+            sphase.push_back(static_cast<double>(k) + 0.5);
+            sscale.push_back(step_scale[k]);
+        }
+        sphase.push_back(static_cast<double>(step_scale.size()));
+        sscale.push_back(step_scale.back());
+        s.bounce_scale = ClampedSpline(sphase, sscale);
         s.ramp_in_s = kt[1] - kt[0];
         s.ramp_out_s = kt[kt.size() - 1] - kt[kt.size() - 2];
         const double bout_end_s = s.t1;
@@ -179,7 +202,9 @@ KinState BodyKinematics::at(double t_s) {
     Profile w_out = chain(scaled(transition, tau.f, kt1 - s.ramp_out_s, s.ramp_out_s), tau);
     w_out = {1.0 - w_out.f, -w_out.df, -w_out.ddf};
     const Profile w = product(w_in, w_out);
-    const Profile bounce = oscillation(shape_.bounce_m, w, ph, 2.0, -0.5 * M_PI);  // lowest at each landing
+    // Bounce: the step's amplitude (a function of the phase) times the oscillation, lowest at each landing.
+    const Profile bounce_scale = chain(s.bounce_scale.at(ph.f), ph);
+    const Profile bounce = product(bounce_scale, oscillation(shape_.bounce_m, w, ph, 2.0, -0.5 * M_PI));
     const Profile sway = oscillation(shape_.sway_m, w, ph, 1.0, 0.0);
     const Profile pitch = oscillation(shape_.pitch_rad, w, ph, 2.0, 0.0);
     const Profile roll = oscillation(shape_.roll_rad, w, ph, 1.0, 0.0);

@@ -1,8 +1,23 @@
 // SPDX-License-Identifier: Apache-2.0
-// Chest- or waist-mounted sensor trajectory: forward progression through the
-// walk's step points (a clamped cubic spline per walking bout), vertical bounce
-// at the step frequency, lateral sway at half of it, small pitch and roll
-// oscillations, standing still (and turning on the spot) during pauses.
+// Chest- or waist-mounted sensor trajectory: forward progression along the
+// centre of mass' path, the walk's step points smoothed (trunk_path.hpp; a
+// clamped cubic spline per walking bout), facing along that path
+// (path_heading.hpp), vertical bounce at the step frequency, lateral sway at
+// half of it, small pitch and roll oscillations, standing still (and turning
+// on the spot) during pauses.
+//
+// The bounce follows the inverted pendulum: over a level step of length L the
+// trunk rides on the stance leg (length l) and rises by
+//
+//   h(L) = l - sqrt(l^2 - (L/2)^2)     (about L^2 / 8l)
+//
+// so the bounce amplitude of each level step is bounce_m h(L) / h(L_nominal):
+// a nominal step keeps bounce_m exactly, and with the gait plan's walk ratio
+// (cadence proportional to L) the vertical acceleration range over a step
+// grows as L^4, which is what Weinberg's step-length model reads. Steps on
+// stairs keep bounce_m. The amplitude is a clamped cubic spline of the step
+// phase through each step's value at mid-step (phase k - 1/2 for step k), so
+// position, velocity and acceleration stay exactly consistent.
 #pragma once
 
 #include <cmath>
@@ -17,7 +32,7 @@ namespace pednav::sim::detail {
 
 struct BodyShape {
     double height_m = 1.35;    // sensor above the floor
-    double bounce_m = 0.02;    // vertical amplitude (peak-to-peak twice this)
+    double bounce_m = 0.02;    // vertical amplitude at the nominal step (peak-to-peak twice this)
     double sway_m = 0.02;      // lateral amplitude at half the step frequency
     double pitch_rad = 0.035;  // pitch oscillation amplitude at the step frequency
     double roll_rad = 0.03;    // roll oscillation amplitude at half the step frequency
@@ -28,6 +43,7 @@ struct BodyShape {
     double pitch_offset_rad = 0.0; // constant pitch, negative = nose up (a phone tilted towards the face)
     double hand_sway_m = 0.0;      // the hand's own motion: lateral at half the step frequency, vertical at it
     double wobble_rad = 0.0;       // slow attitude wobble of the hand (yaw, pitch, roll), 0.23 to 0.61 Hz
+    double leg_length_m = 0.9;     // the inverted pendulum's length, hip to floor (a walker of about 1.75 m)
     static BodyShape chest() { return {}; }
     static BodyShape waist() { return {1.0, 0.025, 0.025, 0.025, 0.04}; }
     // A phone held in front at 1.1 m, pitched 35 deg nose up, following the
@@ -64,7 +80,8 @@ private:
         int segment = 0;
         std::vector<int> segment_at_knot;
         std::vector<double> knot_t;
-        ClampedSpline x, y, z, yaw, phase;  // bout
+        ClampedSpline x, y, z, yaw, phase;  // bout (yaw on its own knots: path_heading.hpp)
+        ClampedSpline bounce_scale;         // bout: the bounce amplitude over bounce_m, against the phase
         double ramp_in_s = 0.5, ramp_out_s = 0.5;
     };
     BodyShape shape_;

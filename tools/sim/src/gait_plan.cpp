@@ -13,9 +13,15 @@ Eigen::Vector3d vec(const double v[3]) { return {v[0], v[1], v[2]}; }
 
 }  // namespace
 
+double level_stride_s(double stride_m, double stride_nominal_m, double stride_nominal_s) {
+    const double s = std::clamp(stride_m / stride_nominal_m, kStrideRatioMin, kStrideRatioMax);
+    return stride_nominal_s / s;
+}
+
 GaitPlan plan_gait(const Route& route) {
     if (route.waypoints.size() < 2) throw std::runtime_error("route: at least two waypoints are needed");
     GaitPlan plan;
+    plan.step_nominal_m = route.step_length_m;
     const double stride_nominal_m = 2.0 * route.step_length_m;
     const double stride_nominal_s = stride_nominal_m / route.speed_mps;
 
@@ -41,13 +47,14 @@ GaitPlan plan_gait(const Route& route) {
         // Fractions along the segment where the foot lands, and the stride time.
         std::vector<double> fractions;
         StrideKind kind = StrideKind::level;
-        // Stairs: one foot per stair, so a stride spans two risers; level: equal strides near the nominal.
+        // Stairs: one foot per stair, so a stride spans two risers, at the stairs' own period; level:
+        // equal strides near the nominal, at the walk ratio's cadence.
         const int risers =
             wp.stairs ? std::max(1, static_cast<int>(std::lround(std::fabs(d.z()) / route.stair_rise_m))) : 0;
         const int n = std::max(1, static_cast<int>(std::lround(horizontal_m / stride_nominal_m)));
         const double stride_s = wp.stairs
                                     ? 2.0 * route.stairs_step_period_s
-                                    : std::max(horizontal_m / n / route.speed_mps, 0.6 * stride_nominal_s);
+                                    : level_stride_s(horizontal_m / n, stride_nominal_m, stride_nominal_s);
         if (wp.stairs) {
             kind = d.z() >= 0.0 ? StrideKind::stairs_up : StrideKind::stairs_down;
             for (int k = 2; k < risers + 2; k += 2) fractions.push_back(std::min(k, risers) / double(risers));

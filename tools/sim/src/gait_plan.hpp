@@ -1,6 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // The timeline of a walk: where the instrumented foot lands (one footprint per
 // stride, every waypoint is a footprint) and when it swings and stands.
+//
+// A level segment gets round(length / nominal stride) equal strides. Their
+// timing keeps the walk ratio (step length over cadence) of the nominal gait,
+// as real walkers do: a stride s times the nominal length takes the nominal
+// stride time divided by s, so the speed is Route::speed_mps times s^2
+// (speed_mps is the speed at the nominal step). s is taken within
+// [kStrideRatioMin, kStrideRatioMax] for the timing, so that a very short or
+// very long quantised stride keeps a plausible cadence. A flight of stairs
+// keeps its own period (stairs_step_period_s per stair).
 #pragma once
 
 #include <vector>
@@ -27,12 +36,23 @@ struct FootPhase {
     int from = 0, to = 0;
 };
 
+// The stride ratio s beyond which the cadence stops following the stride
+// length: a stride takes at most twice and at least 0.6 times the nominal
+// stride time.
+constexpr double kStrideRatioMin = 0.5;
+constexpr double kStrideRatioMax = 1.0 / 0.6;
+
+// Time of one level stride of length stride_m: the nominal stride time
+// divided by s = stride_m / stride_nominal_m (s clamped as above).
+double level_stride_s(double stride_m, double stride_nominal_m, double stride_nominal_s);
+
 struct GaitPlan {
     std::vector<Footprint> prints;
     std::vector<FootPhase> phases;  // contiguous, from t = 0 to end_s
     std::vector<double> landing_s;  // start of the stance after each swing
     double end_s = 0.0;
-    double distance_m = 0.0;  // horizontal, footprint to footprint
+    double distance_m = 0.0;      // horizontal, footprint to footprint
+    double step_nominal_m = 0.0;  // the route's step_length_m (half the nominal stride)
 };
 
 GaitPlan plan_gait(const Route& route);

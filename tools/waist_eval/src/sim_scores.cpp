@@ -131,6 +131,19 @@ double true_step_length_m(const sim::SimOutput& out, double t0_s, double t1_s) {
     return 0.5 * sum / static_cast<double>(idx.size() - 2);
 }
 
+double stride_length_error_pct(const ReplayResult& r, const sim::SimOutput& out, double t0_s, double t1_s) {
+    double learnt_m = 0, true_m = 0;
+    for (const pn_stride_t& st : r.strides) {
+        const double t_s = static_cast<double>(st.header.t_ns) * 1e-9;
+        if (t_s <= t0_s || t_s > t1_s) continue;
+        const sim::TruthSample &a = out.truth[truth_index(out, st.t_start_ns)],
+                               &b = out.truth[truth_index(out, st.header.t_ns)];
+        learnt_m += st.length_m;
+        true_m += std::hypot(b.pos_enu_m[0] - a.pos_enu_m[0], b.pos_enu_m[1] - a.pos_enu_m[1]);
+    }
+    return true_m > 0 ? 100.0 * (learnt_m / true_m - 1.0) : NAN;
+}
+
 double mean_error_of(const std::vector<OutputError>& errors, int source, int* count) {
     double s = 0;
     int n = 0;

@@ -3,6 +3,7 @@
 // Orientation is the sign of the cross product (counter-clockwise positive).
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "map.hpp"
@@ -10,11 +11,35 @@
 namespace pednav::indoor_map {
 
 // Twice the signed area of triangle (a, b, c): > 0 when counter-clockwise.
-double orientation(const Point2& a, const Point2& b, const Point2& c);
+inline double orientation(const Point2& a, const Point2& b, const Point2& c) {
+    return (b.e_m - a.e_m) * (c.n_m - a.n_m) - (b.n_m - a.n_m) * (c.e_m - a.e_m);
+}
+
+namespace detail {
+inline int sign(double v) { return (v > 0) - (v < 0); }
+
+// q on segment [a, b], given the three are collinear.
+inline bool within_box(const Point2& a, const Point2& b, const Point2& q) {
+    return std::min(a.e_m, b.e_m) <= q.e_m && q.e_m <= std::max(a.e_m, b.e_m) && std::min(a.n_m, b.n_m) <= q.n_m &&
+           q.n_m <= std::max(a.n_m, b.n_m);
+}
+}  // namespace detail
 
 // Whether segments [p0, p1] and [q0, q1] share a point (touching and
-// collinear overlaps count).
-bool segments_intersect(const Point2& p0, const Point2& p1, const Point2& q0, const Point2& q1);
+// collinear overlaps count). Inline: the wall index calls it for every wall
+// near a particle's step.
+inline bool segments_intersect(const Point2& p0, const Point2& p1, const Point2& q0, const Point2& q1) {
+    using detail::sign;
+    using detail::within_box;
+    const int d1 = sign(orientation(q0, q1, p0)), d2 = sign(orientation(q0, q1, p1));
+    const int d3 = sign(orientation(p0, p1, q0)), d4 = sign(orientation(p0, p1, q1));
+    if (d1 * d2 < 0 && d3 * d4 < 0) return true;
+    if (d1 == 0 && within_box(q0, q1, p0)) return true;
+    if (d2 == 0 && within_box(q0, q1, p1)) return true;
+    if (d3 == 0 && within_box(p0, p1, q0)) return true;
+    if (d4 == 0 && within_box(p0, p1, q1)) return true;
+    return false;
+}
 
 // Whether p is inside the ring (even-odd rule; points on the boundary may go
 // either way).

@@ -36,6 +36,7 @@ public:
 private:
     struct Segment {
         double ae, an, be, bn;
+        double e_lo, e_hi, n_lo, n_hi;  // its bounding box
     };
     struct FloorGrid {
         int floor = 0;

@@ -65,7 +65,8 @@ struct Route {
     std::string name;
     std::string description;
     std::vector<Waypoint> waypoints;    // at least two
-    double speed_mps = 1.3;             // walking speed on level floors
+    double speed_mps = 1.3;             // walking speed on level floors at the nominal step; a level
+                                        // stride s times the nominal walks at speed_mps s^2 (walk ratio)
     double step_length_m = 0.7;         // one step (half a stride) on level floors
     double stance_fraction = 0.28;      // share of a stride the foot is flat and still
     double stair_rise_m = 0.17;         // per stair step

@@ -68,6 +68,11 @@ Drift drift_in(const std::vector<OutputError>& errors, double t0_s, double t1_s)
 // fewer than three steps.
 double true_step_length_m(const sim::SimOutput& out, double t0_s, double t1_s);
 
+// The learnt step length against the truth over the strides that end in
+// (t0, t1]: their summed lengths over the true horizontal distance between
+// each one's start and end, minus one, %; NAN without a stride.
+double stride_length_error_pct(const ReplayResult& r, const sim::SimOutput& out, double t0_s, double t1_s);
+
 // Mean horizontal error of the outputs of `source`, and how many there are.
 double mean_error_of(const std::vector<OutputError>& errors, int source, int* count);
 // The outputs of `source`: mean of err_e^2 / var_e and err_n^2 / var_n (1 when
