@@ -265,16 +265,31 @@ void print_json_row(const Row& r, bool first) {
     std::printf("\"push_failures\": %zu}", r.push_failures);
 }
 
-void print_markdown_row(const Row& r) {
+// The command that measures the row again (the figures of one row come from one preset on one input).
+std::string command_for(const Options& o, const Row& r) {
+    char walk[160] = "";
+    const Options defaults;
+    if (o.route != defaults.route || o.rate_hz != defaults.rate_hz || o.gnss_rate_hz != defaults.gnss_rate_hz ||
+        o.baro_rate_hz != defaults.baro_rate_hz)
+        std::snprintf(walk, sizeof walk, " --route %s --rate %g --gnss-rate %g --baro-rate %g", o.route.c_str(), o.rate_hz,
+                      o.gnss_rate_hz, o.baro_rate_hz);
+    char cmd[320];
+    std::snprintf(cmd, sizeof cmd, "`build/bin/pipeline_throughput --mount %s%s --input %s --passes %d%s`", r.mount.c_str(),
+                  walk, r.input == "imu" ? "imu" : "all", o.passes, r.split.ok ? " --instructions" : "");
+    return cmd;
+}
+
+void print_markdown_row(const Options& o, const Row& r) {
     const double n = static_cast<double>(r.imu_samples);
     char instructions[96] = "";
     if (r.split.ok)
         std::snprintf(instructions, sizeof instructions, "%.0f + %.0f = %.0f", static_cast<double>(r.split.engine) / n,
                       static_cast<double>(r.split.plugins) / n, static_cast<double>(r.split.total) / n);
-    std::printf("| %s | %s | %.2f M | %s | %.4f | %lld / %lld ns | %.1f MiB (engine %.1f MiB) |\n", r.mount.c_str(),
+    std::printf("| %s | %s | %.2f M | %s | %g | %lld / %lld ns | %.1f MiB (engine %.1f MiB) | %s |\n", r.mount.c_str(),
                 r.input.c_str(), n / r.best_seconds * 1e-6, instructions, r.allocations_per_sample,
                 static_cast<long long>(r.push_p50), static_cast<long long>(r.push_p99),
-                static_cast<double>(r.rss_kib) / 1024.0, static_cast<double>(r.engine_heap_kib) / 1024.0);
+                static_cast<double>(r.rss_kib) / 1024.0, static_cast<double>(r.engine_heap_kib) / 1024.0,
+                command_for(o, r).c_str());
 }
 
 int usage(const char* argv0) {
@@ -312,7 +327,7 @@ int main(int argc, char** argv) {
     if (o.mounts.empty()) o.mounts = {"foot", "chest", "handheld", "waist"};
     if (o.markdown) {
         std::printf("| preset | input | samples/s | instructions / sample: engine + plugins = total | allocations / "
-                    "sample | push p50 / p99 | resident memory |\n| --- | --- | --- | --- | --- | --- | --- |\n");
+                    "sample | push p50 / p99 | resident memory | command |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n");
     } else {
         std::printf("{\n  \"benchmark\": \"pipeline_throughput\",\n  \"rate_hz\": %g,\n  \"route\": \"%s\",\n"
                     "  \"gnss_rate_hz\": %g,\n  \"baro_rate_hz\": %g,\n  \"mounts\": [",
@@ -368,7 +383,7 @@ int main(int argc, char** argv) {
                 if (o.instructions) row.split = measure_instructions(o, mount, all_sensors);
             }
             total_failures += row.push_failures;
-            if (o.markdown) print_markdown_row(row);
+            if (o.markdown) print_markdown_row(o, row);
             else print_json_row(row, first);
             first = false;
         }
