@@ -36,6 +36,7 @@
 #include <malloc.h>
 #include <valgrind/callgrind.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -44,7 +45,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include <pednav/pn_engine.h>
@@ -128,7 +128,8 @@ struct Pass {
 enum class PassKind { throughput, callgrind, latency, every_type };
 
 void count_failure(Pass& r, pn_status_t st, const char* what, size_t i, const pn_error_t& err) {
-    if (st != PN_OK && r.push_failures++ == 0) std::fprintf(stderr, "%s %zu failed: %s: %s\n", what, i, err.where, err.message);
+    if (st != PN_OK && r.push_failures++ == 0)
+        std::fprintf(stderr, "%s %zu failed: %s: %s\n", what, i, err.where, err.message);
 }
 
 Pass run_pass(const std::string& config, const Records& records, PassKind kind) {
@@ -153,7 +154,8 @@ Pass run_pass(const std::string& config, const Records& records, PassKind kind) 
             const auto t0 = std::chrono::steady_clock::now();
             const pn_status_t st = pn_engine_push(engine, records[i], &err);
             const auto t1 = std::chrono::steady_clock::now();
-            if (kind == PassKind::latency) r.push_ns[i] = std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count();
+            if (kind == PassKind::latency)
+                r.push_ns[i] = std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count();
             count_failure(r, st, "push", i, err);
             while (pn_engine_poll(engine, &out) == PN_OK) {
                 digest.add(&out, out.header.struct_size);
@@ -210,7 +212,8 @@ struct Row {
 };
 
 // The same walk under callgrind: this program again, one pass of one input.
-pednav::bench::InstructionSplit measure_instructions(const Options& o, const std::string& mount, bool all_sensors) {
+pednav::bench::InstructionSplit measure_instructions(const Options& o, const std::string& mount,
+                                                     bool all_sensors) {
     pednav::bench::InstructionSplit s;
     char dir[] = "/tmp/pipeline_throughput.XXXXXX";
     if (!mkdtemp(dir)) {
@@ -226,12 +229,13 @@ pednav::bench::InstructionSplit measure_instructions(const Options& o, const std
     }
     self[n] = '\0';
     char cmd[8192];
-    std::snprintf(cmd, sizeof cmd,
-                  "valgrind --tool=callgrind --instr-atstart=no --callgrind-out-file=%s '%s' --mount '%s' "
-                  "--single-pass --single-input %s --route '%s' --rate %.17g --gnss-rate %.17g --baro-rate %.17g "
-                  ">/dev/null 2>&1",
-                  out.c_str(), self, mount.c_str(), all_sensors ? "all" : "imu", o.route.c_str(), o.rate_hz,
-                  o.gnss_rate_hz, o.baro_rate_hz);
+    std::snprintf(
+        cmd, sizeof cmd,
+        "valgrind --tool=callgrind --instr-atstart=no --callgrind-out-file=%s '%s' --mount '%s' "
+        "--single-pass --single-input %s --route '%s' --rate %.17g --gnss-rate %.17g --baro-rate %.17g "
+        ">/dev/null 2>&1",
+        out.c_str(), self, mount.c_str(), all_sensors ? "all" : "imu", o.route.c_str(), o.rate_hz,
+        o.gnss_rate_hz, o.baro_rate_hz);
     if (std::system(cmd) != 0) {
         s.error = "valgrind failed (is it installed?)";
     } else {
@@ -243,24 +247,27 @@ pednav::bench::InstructionSplit measure_instructions(const Options& o, const std
 }
 
 void print_json_row(const Row& r, bool first) {
-    std::printf("%s\n    {\"mount\": \"%s\", \"input\": \"%s\", \"imu_samples\": %zu, \"records\": %zu, \"outputs\": %zu, "
-                "\"best_seconds\": %.6f, \"samples_per_second\": %.0f, \"ns_per_sample\": %.1f, "
-                "\"allocations_per_sample_steady_state\": %.4f, \"push_ns_p50\": %lld, \"push_ns_p99\": %lld, "
-                "\"rss_kib\": %ld, \"engine_heap_kib\": %ld, \"outputs_digest\": \"%016llx\", "
-                "\"all_types_digest\": \"%016llx\", ",
-                first ? "" : ",", r.mount.c_str(), r.input.c_str(), r.imu_samples, r.records, r.outputs,
-                r.best_seconds, static_cast<double>(r.imu_samples) / r.best_seconds,
-                r.best_seconds / static_cast<double>(r.imu_samples) * 1e9, r.allocations_per_sample,
-                static_cast<long long>(r.push_p50), static_cast<long long>(r.push_p99), r.rss_kib,
-                r.engine_heap_kib, static_cast<unsigned long long>(r.outputs_digest),
-                static_cast<unsigned long long>(r.all_types_digest));
+    std::printf(
+        "%s\n    {\"mount\": \"%s\", \"input\": \"%s\", \"imu_samples\": %zu, \"records\": %zu, \"outputs\": "
+        "%zu, "
+        "\"best_seconds\": %.6f, \"samples_per_second\": %.0f, \"ns_per_sample\": %.1f, "
+        "\"allocations_per_sample_steady_state\": %.4f, \"push_ns_p50\": %lld, \"push_ns_p99\": %lld, "
+        "\"rss_kib\": %ld, \"engine_heap_kib\": %ld, \"outputs_digest\": \"%016llx\", "
+        "\"all_types_digest\": \"%016llx\", ",
+        first ? "" : ",", r.mount.c_str(), r.input.c_str(), r.imu_samples, r.records, r.outputs,
+        r.best_seconds, static_cast<double>(r.imu_samples) / r.best_seconds,
+        r.best_seconds / static_cast<double>(r.imu_samples) * 1e9, r.allocations_per_sample,
+        static_cast<long long>(r.push_p50), static_cast<long long>(r.push_p99), r.rss_kib, r.engine_heap_kib,
+        static_cast<unsigned long long>(r.outputs_digest),
+        static_cast<unsigned long long>(r.all_types_digest));
     if (r.split.ok) {
         const double n = static_cast<double>(r.imu_samples);
         std::printf("\"instructions_per_sample\": {\"total\": %.0f, \"engine\": %.0f, \"plugins\": %.0f}, ",
                     static_cast<double>(r.split.total) / n, static_cast<double>(r.split.engine) / n,
                     static_cast<double>(r.split.plugins) / n);
     } else if (!r.split.error.empty()) {
-        std::printf("\"instructions_per_sample\": null, \"instructions_error\": \"%s\", ", r.split.error.c_str());
+        std::printf("\"instructions_per_sample\": null, \"instructions_error\": \"%s\", ",
+                    r.split.error.c_str());
     }
     std::printf("\"push_failures\": %zu}", r.push_failures);
 }
@@ -269,13 +276,14 @@ void print_json_row(const Row& r, bool first) {
 std::string command_for(const Options& o, const Row& r) {
     char walk[160] = "";
     const Options defaults;
-    if (o.route != defaults.route || o.rate_hz != defaults.rate_hz || o.gnss_rate_hz != defaults.gnss_rate_hz ||
-        o.baro_rate_hz != defaults.baro_rate_hz)
-        std::snprintf(walk, sizeof walk, " --route %s --rate %g --gnss-rate %g --baro-rate %g", o.route.c_str(), o.rate_hz,
-                      o.gnss_rate_hz, o.baro_rate_hz);
+    if (o.route != defaults.route || o.rate_hz != defaults.rate_hz ||
+        o.gnss_rate_hz != defaults.gnss_rate_hz || o.baro_rate_hz != defaults.baro_rate_hz)
+        std::snprintf(walk, sizeof walk, " --route %s --rate %g --gnss-rate %g --baro-rate %g",
+                      o.route.c_str(), o.rate_hz, o.gnss_rate_hz, o.baro_rate_hz);
     char cmd[320];
-    std::snprintf(cmd, sizeof cmd, "`build/bin/pipeline_throughput --mount %s%s --input %s --passes %d%s`", r.mount.c_str(),
-                  walk, r.input == "imu" ? "imu" : "all", o.passes, r.split.ok ? " --instructions" : "");
+    std::snprintf(cmd, sizeof cmd, "`build/bin/pipeline_throughput --mount %s%s --input %s --passes %d%s`",
+                  r.mount.c_str(), walk, r.input == "imu" ? "imu" : "all", o.passes,
+                  r.split.ok ? " --instructions" : "");
     return cmd;
 }
 
@@ -283,21 +291,23 @@ void print_markdown_row(const Options& o, const Row& r) {
     const double n = static_cast<double>(r.imu_samples);
     char instructions[96] = "";
     if (r.split.ok)
-        std::snprintf(instructions, sizeof instructions, "%.0f + %.0f = %.0f", static_cast<double>(r.split.engine) / n,
-                      static_cast<double>(r.split.plugins) / n, static_cast<double>(r.split.total) / n);
-    std::printf("| %s | %s | %.2f M | %s | %g | %lld / %lld ns | %.1f MiB (engine %.1f MiB) | %s |\n", r.mount.c_str(),
-                r.input.c_str(), n / r.best_seconds * 1e-6, instructions, r.allocations_per_sample,
-                static_cast<long long>(r.push_p50), static_cast<long long>(r.push_p99),
-                static_cast<double>(r.rss_kib) / 1024.0, static_cast<double>(r.engine_heap_kib) / 1024.0,
-                command_for(o, r).c_str());
+        std::snprintf(instructions, sizeof instructions, "%.0f + %.0f = %.0f",
+                      static_cast<double>(r.split.engine) / n, static_cast<double>(r.split.plugins) / n,
+                      static_cast<double>(r.split.total) / n);
+    std::printf("| %s | %s | %.2f M | %s | %g | %lld / %lld ns | %.1f MiB (engine %.1f MiB) | %s |\n",
+                r.mount.c_str(), r.input.c_str(), n / r.best_seconds * 1e-6, instructions,
+                r.allocations_per_sample, static_cast<long long>(r.push_p50),
+                static_cast<long long>(r.push_p99), static_cast<double>(r.rss_kib) / 1024.0,
+                static_cast<double>(r.engine_heap_kib) / 1024.0, command_for(o, r).c_str());
 }
 
 int usage(const char* argv0) {
-    std::fprintf(stderr,
-                 "usage: %s [--mount M]... [--passes N] [--rate HZ] [--route NAME] [--gnss-rate HZ] [--baro-rate HZ]\n"
-                 "          [--input imu|all|both] [--instructions] [--markdown]\n"
-                 "       %s --single-pass [--single-input imu|all] ...\n",
-                 argv0, argv0);
+    std::fprintf(
+        stderr,
+        "usage: %s [--mount M]... [--passes N] [--rate HZ] [--route NAME] [--gnss-rate HZ] [--baro-rate HZ]\n"
+        "          [--input imu|all|both] [--instructions] [--markdown]\n"
+        "       %s --single-pass [--single-input imu|all] ...\n",
+        argv0, argv0);
     return 2;
 }
 
@@ -309,29 +319,44 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool has_value = i + 1 < argc;
-        if (a == "--mount" && has_value) o.mounts.push_back(argv[++i]);
-        else if (a == "--passes" && has_value) o.passes = std::max(1, std::atoi(argv[++i]));
-        else if (a == "--rate" && has_value) o.rate_hz = std::atof(argv[++i]);
-        else if (a == "--route" && has_value) o.route = argv[++i];
-        else if (a == "--gnss-rate" && has_value) o.gnss_rate_hz = std::atof(argv[++i]);
-        else if (a == "--baro-rate" && has_value) o.baro_rate_hz = std::atof(argv[++i]);
-        else if (a == "--input" && has_value) o.input = argv[++i];
-        else if (a == "--single-input" && has_value) single_input = argv[++i];
-        else if (a == "--single-pass") o.single = true;
-        else if (a == "--instructions") o.instructions = true;
-        else if (a == "--markdown") o.markdown = true;
-        else return usage(argv[0]);
+        if (a == "--mount" && has_value)
+            o.mounts.push_back(argv[++i]);
+        else if (a == "--passes" && has_value)
+            o.passes = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--rate" && has_value)
+            o.rate_hz = std::atof(argv[++i]);
+        else if (a == "--route" && has_value)
+            o.route = argv[++i];
+        else if (a == "--gnss-rate" && has_value)
+            o.gnss_rate_hz = std::atof(argv[++i]);
+        else if (a == "--baro-rate" && has_value)
+            o.baro_rate_hz = std::atof(argv[++i]);
+        else if (a == "--input" && has_value)
+            o.input = argv[++i];
+        else if (a == "--single-input" && has_value)
+            single_input = argv[++i];
+        else if (a == "--single-pass")
+            o.single = true;
+        else if (a == "--instructions")
+            o.instructions = true;
+        else if (a == "--markdown")
+            o.markdown = true;
+        else
+            return usage(argv[0]);
     }
     if (o.input != "imu" && o.input != "all" && o.input != "both") return usage(argv[0]);
     if (o.single) o.input = single_input == "all" ? "all" : "imu";
     if (o.mounts.empty()) o.mounts = {"foot", "chest", "handheld", "waist"};
     if (o.markdown) {
-        std::printf("| preset | input | samples/s | instructions / sample: engine + plugins = total | allocations / "
-                    "sample | push p50 / p99 | resident memory | command |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+        std::printf(
+            "| preset | input | samples/s | instructions / sample: engine + plugins = total | allocations / "
+            "sample | push p50 / p99 | resident memory | command |\n| --- | --- | --- | --- | --- | --- | "
+            "--- | --- |\n");
     } else {
-        std::printf("{\n  \"benchmark\": \"pipeline_throughput\",\n  \"rate_hz\": %g,\n  \"route\": \"%s\",\n"
-                    "  \"gnss_rate_hz\": %g,\n  \"baro_rate_hz\": %g,\n  \"mounts\": [",
-                    o.rate_hz, o.route.c_str(), o.gnss_rate_hz, o.baro_rate_hz);
+        std::printf(
+            "{\n  \"benchmark\": \"pipeline_throughput\",\n  \"rate_hz\": %g,\n  \"route\": \"%s\",\n"
+            "  \"gnss_rate_hz\": %g,\n  \"baro_rate_hz\": %g,\n  \"mounts\": [",
+            o.rate_hz, o.route.c_str(), o.gnss_rate_hz, o.baro_rate_hz);
     }
     bool first = true;
     size_t total_failures = 0;
@@ -361,13 +386,14 @@ int main(int argc, char** argv) {
             row.records = records.size();
             row.best_seconds = 1e300;
             for (int p = 0; p < (o.single ? 1 : o.passes); ++p) {
-                const Pass pass = run_pass(config, records, o.single ? PassKind::callgrind : PassKind::throughput);
+                const Pass pass =
+                    run_pass(config, records, o.single ? PassKind::callgrind : PassKind::throughput);
                 if (!pass.ok) return 1;
                 row.best_seconds = std::min(row.best_seconds, pass.seconds);
                 row.push_failures += pass.push_failures;
                 row.outputs = pass.outputs;
-                row.allocations_per_sample =
-                    static_cast<double>(pass.allocations_second_half) / (static_cast<double>(row.imu_samples) / 2);
+                row.allocations_per_sample = static_cast<double>(pass.allocations_second_half) /
+                                             (static_cast<double>(row.imu_samples) / 2);
             }
             if (!o.single) {
                 const Pass latency = run_pass(config, records, PassKind::latency);
@@ -383,8 +409,10 @@ int main(int argc, char** argv) {
                 if (o.instructions) row.split = measure_instructions(o, mount, all_sensors);
             }
             total_failures += row.push_failures;
-            if (o.markdown) print_markdown_row(o, row);
-            else print_json_row(row, first);
+            if (o.markdown)
+                print_markdown_row(o, row);
+            else
+                print_json_row(row, first);
             first = false;
         }
     }

@@ -58,7 +58,8 @@ public:
     // [producer] The newest record of `type` pushed (queued or dropped).
     bool latest(pn_record_type_t type, pn_output_t* out) const {
         if (type >= PN_REC_TYPE_COUNT || latest_seq_[type] == kNone) return false;
-        const pn_output_t& from = latest_seq_[type] == kKept ? kept_[type] : slots_[latest_seq_[type] % slots_.size()];
+        const pn_output_t& from =
+            latest_seq_[type] == kKept ? kept_[type] : slots_[latest_seq_[type] % slots_.size()];
         std::memcpy(out, &from, from.header.struct_size);
         return true;
     }

@@ -56,7 +56,9 @@ struct Checker {
     // scale (rounding in a filter's update stays far inside it). PSD by
     // Sylvester's criterion for semi-definite matrices: every principal
     // minor >= 0 (the diagonal, the three 2x2, the determinant).
-    bool covariance(const char* field, const double* c) { return finite(field, c, 9) && semi_definite(field, c); }
+    bool covariance(const char* field, const double* c) {
+        return finite(field, c, 9) && semi_definite(field, c);
+    }
 
     // The same, for a covariance known to be finite.
     bool semi_definite(const char* field, const double* c) {
@@ -66,7 +68,8 @@ struct Checker {
                 if (c[4 * i] < 0) return fail(field, 4 * i, c[4 * i], "(negative variance)");
         }
         double s0, s1, s2;  // the symmetric parts of [0][1], [0][2], [1][2]
-        if (!(off_diagonal(field, 1, c[1], c[3], d0 * d1, s0) && off_diagonal(field, 2, c[2], c[6], d0 * d2, s1) &&
+        if (!(off_diagonal(field, 1, c[1], c[3], d0 * d1, s0) &&
+              off_diagonal(field, 2, c[2], c[6], d0 * d2, s1) &&
               off_diagonal(field, 5, c[5], c[7], d1 * d2, s2)))
             return false;
         constexpr double tol = kCovarianceTolerance;
@@ -81,10 +84,13 @@ struct Checker {
         if (a != b && (a - b) * (a - b) > tol * tol * vv)
             return fail(field, index, a, "(not symmetric with its transposed element)");
         s = 0.5 * (a + b);
-        return s * s <= vv * (1 + tol) || fail(field, index, s, "(a correlation above 1: not positive semi-definite)");
+        return s * s <= vv * (1 + tol) ||
+               fail(field, index, s, "(a correlation above 1: not positive semi-definite)");
     }
 
-    bool unit_quaternion(const char* field, const double* q) { return finite(field, q, 4) && unit_norm(field, q); }
+    bool unit_quaternion(const char* field, const double* q) {
+        return finite(field, q, 4) && unit_norm(field, q);
+    }
 
     // The same, for a quaternion known to be finite.
     bool unit_norm(const char* field, const double* q) {
@@ -172,7 +178,8 @@ inline bool sum_finite(const double* v, int n) {
 
 // The doubles of a record checked for finiteness, in runs of fields that lie
 // one after the other (pinned here, the layout sentinels pin the ABI).
-#define PEDNAV_FOLLOWS(T, a, na, b) static_assert(offsetof(T, b) == offsetof(T, a) + (na) * sizeof(double), #b)
+#define PEDNAV_FOLLOWS(T, a, na, b) \
+    static_assert(offsetof(T, b) == offsetof(T, a) + (na) * sizeof(double), #b)
 PEDNAV_FOLLOWS(pn_imu_t, accel_mps2, 3, gyro_radps);
 PEDNAV_FOLLOWS(pn_attitude_t, q_enu_from_body, 4, heading_rad);
 PEDNAV_FOLLOWS(pn_attitude_t, heading_rad, 1, gyro_bias_radps);
@@ -230,13 +237,15 @@ bool attitude_correction_ok(const pn_record_header_t* h) {
 bool position_ok(const pn_record_header_t* h) {
     auto* r = reinterpret_cast<const pn_position_t*>(h);
     const bool velocity = r->header.flags & PN_POSITION_FLAG_HAS_VELOCITY;
-    return ((velocity ? sum_finite(r->pos_enu_m, 16) : sum_finite(r->pos_enu_m, 3) && sum_finite(r->cov_enu_m2, 10)) &&
+    return ((velocity ? sum_finite(r->pos_enu_m, 16)
+                      : sum_finite(r->pos_enu_m, 3) && sum_finite(r->cov_enu_m2, 10)) &&
             Checker<false>{}.semi_definite("", r->cov_enu_m2)) ||
            exact(h);
 }
 bool stride_ok(const pn_record_header_t* h) {
     auto* r = reinterpret_cast<const pn_stride_t*>(h);
-    return (sum_finite(r->displacement_enu_m, 14) && Checker<false>{}.semi_definite("", r->cov_displacement_m2)) ||
+    return (sum_finite(r->displacement_enu_m, 14) &&
+            Checker<false>{}.semi_definite("", r->cov_displacement_m2)) ||
            exact(h);
 }
 

@@ -11,10 +11,11 @@ namespace pednav::engine {
 
 // Smallest struct_size accepted for a record type (the 1.0 size), 0 if unknown.
 inline uint32_t min_record_size(pn_record_type_t type) {
+    // Indexed by type; there is no type 0.
     static constexpr uint32_t kMinSize[PN_REC_TYPE_COUNT] = {
-        0,  // no type 0
-        PN_IMU_MIN_SIZE, PN_MAG_MIN_SIZE, PN_BARO_MIN_SIZE, PN_GNSS_MIN_SIZE, PN_GAIT_PHASE_MIN_SIZE, PN_STEP_MIN_SIZE,
-        PN_ATTITUDE_MIN_SIZE, PN_ATTITUDE_CORRECTION_MIN_SIZE, PN_POSITION_MIN_SIZE, PN_STRIDE_MIN_SIZE};
+        0, PN_IMU_MIN_SIZE, PN_MAG_MIN_SIZE, PN_BARO_MIN_SIZE, PN_GNSS_MIN_SIZE, PN_GAIT_PHASE_MIN_SIZE,
+        PN_STEP_MIN_SIZE, PN_ATTITUDE_MIN_SIZE, PN_ATTITUDE_CORRECTION_MIN_SIZE, PN_POSITION_MIN_SIZE,
+        PN_STRIDE_MIN_SIZE};
     static_assert(PN_REC_STRIDE == 10 && PN_REC_TYPE_COUNT == 11, "one size per type");
     return type < PN_REC_TYPE_COUNT ? kMinSize[type] : 0;
 }

@@ -14,7 +14,9 @@
 namespace pednav::engine {
 
 namespace detail {
-inline void copy16(unsigned char* out, const unsigned char* src, uint32_t at) { std::memcpy(out + at, src + at, 16); }
+inline void copy16(unsigned char* out, const unsigned char* src, uint32_t at) {
+    std::memcpy(out + at, src + at, 16);
+}
 }  // namespace detail
 
 // Copies r->struct_size bytes of `r` (at most PN_RECORD_MAX_SIZE) to `dst`.

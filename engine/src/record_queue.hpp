@@ -33,7 +33,9 @@ public:
         return end_++;
     }
     // The slot of the next record (needs !full()); append() then counts it in.
-    pn_record_header_t* next_slot() { return reinterpret_cast<pn_record_header_t*>(slots_[end_ & mask_].bytes); }
+    pn_record_header_t* next_slot() {
+        return reinterpret_cast<pn_record_header_t*>(slots_[end_ & mask_].bytes);
+    }
     Seq append() { return end_++; }
 
     bool full() const { return end_ - begin_ > mask_; }
@@ -65,7 +67,9 @@ public:
     const pn_record_header_t* at(Seq seq) const {
         return reinterpret_cast<const pn_record_header_t*>(slots_[seq & mask_].bytes);
     }
-    pn_record_header_t* at(Seq seq) { return reinterpret_cast<pn_record_header_t*>(slots_[seq & mask_].bytes); }
+    pn_record_header_t* at(Seq seq) {
+        return reinterpret_cast<pn_record_header_t*>(slots_[seq & mask_].bytes);
+    }
     // Frees every slot before `seq` (all consumers are past it).
     void release_until(Seq seq) {
         if (seq > begin_) begin_ = seq < end_ ? seq : end_;

@@ -21,7 +21,6 @@ int64_t saturating_sub(int64_t a, int64_t b) {
     return (b > 0 && a < INT64_MIN + b) ? INT64_MIN : a - b;
 }
 
-
 int64_t now_ns() {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
         .count();
@@ -103,7 +102,8 @@ void Scheduler::wire() {
                     if (!(in.mask & PN_REC_MASK(t))) continue;
                     Route& route = routes_[in.queue][t];
                     if (feedback)
-                        route.feedback[route.feedback_count++] = Route::Feedback{&in.fifo, &s.feedback_pending};
+                        route.feedback[route.feedback_count++] =
+                            Route::Feedback{&in.fifo, &s.feedback_pending};
                     else
                         route.forward[route.forward_count++] = Route::Forward{&in.fifo, &s.next_forward_t_ns};
                 }
@@ -204,7 +204,7 @@ PEDNAV_ALWAYS_INLINE void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
     const pn_record_header_t* batch[kMaxBatch];
     uint32_t count = 0;
     int64_t next = kInf;
-    for (Stage::Input *in = s.forward.data(), *end = in + s.forward.size(); in != end; ++in)
+    for (Stage::Input* in = s.forward.data(), *end = in + s.forward.size(); in != end; ++in)
         count = in->fifo.take_at(t_ns, batch, count, kMaxBatch, next);
     s.next_forward_t_ns = next;
     s.last_input_t_ns = t_ns;
@@ -212,7 +212,8 @@ PEDNAV_ALWAYS_INLINE void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
     call_process(s, batch, count);
 }
 
-PEDNAV_ALWAYS_INLINE void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count) {
+PEDNAV_ALWAYS_INLINE void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records,
+                                                  uint32_t count) {
     s.records_in += count;
     pn_error_t err;
     err.struct_size = sizeof err;
@@ -325,8 +326,7 @@ PEDNAV_ALWAYS_INLINE void Scheduler::drain_level(int64_t limit) {
         if (s.feedback_pending) deliver_feedback(s);  // then some feedback edge has records
         const int64_t t = s.next_forward_t_ns <= limit ? s.next_forward_t_ns : kInf;
         if constexpr (K + 1 < N) {
-            const int64_t below =
-                passes_limit ? (t == kInf ? limit : t - 1) : s.decided_until_t_ns;
+            const int64_t below = passes_limit ? (t == kInf ? limit : t - 1) : s.decided_until_t_ns;
             if (has_work<K + 1, N>(below)) drain_level<K + 1, N>(below);
         }
         if (t == kInf) {

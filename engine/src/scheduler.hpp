@@ -107,7 +107,8 @@ struct Stage {
     static constexpr uint32_t kUndeclared = UINT32_MAX;  // min_size of a type the stage does not produce
     struct Emission {
         uint32_t min_size = kUndeclared;  // smallest struct_size accepted
-        bool to_output = false;           // the stage is the type's last producer: to the output queue (if in the mask)
+        bool to_output =
+            false;  // the stage is the type's last producer: to the output queue (if in the mask)
         ValuesCheck values_ok = nullptr;  // record_values_ok for the type
         RecordQueue* queue = nullptr;     // the stage's queue, when some stage reads the type; else nullptr
         const Route* route = nullptr;     // then the edges of the type in that queue
@@ -121,7 +122,8 @@ struct Stage {
     int64_t last_stored_t_ns = INT64_MIN;  // newest record put into its queue
     int64_t last_emitted_t_ns[PN_REC_TYPE_COUNT];  // newest accepted record per type
     int64_t last_input_t_ns = INT64_MIN;  // newest forward record consumed
-    int64_t decided_until_t_ns = INT64_MIN;  // last_input_t_ns - latency_ns: everything about times to here is out
+    int64_t decided_until_t_ns =
+        INT64_MIN;  // last_input_t_ns - latency_ns: everything about times to here is out
     // Why the sink last refused a record. Fixed storage: the sink runs inside
     // noexcept plugin calls and must not allocate to describe a refusal.
     char sink_problem[256] = {};
@@ -188,7 +190,7 @@ public:
 private:
     static pn_status_t sink_emit(const pnp_sink_t* sink, const pn_record_header_t* record) noexcept;
     pn_status_t refuse_record(Stage& s, const pn_record_header_t* r);  // says why accept() refused r
-    pn_status_t refuse(Stage& s, pn_status_t status);  // logs s.sink_problem as misbehaviour
+    pn_status_t refuse(Stage& s, pn_status_t status);                  // logs s.sink_problem as misbehaviour
     void warn_outputs_dropped() noexcept;
 
     void wire();
@@ -204,7 +206,8 @@ private:
     void deliver_feedback(Stage& s);
     void deliver_forward(Stage& s, int64_t t_ns);
     void call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count);
-    void call_process_timed(Stage& s, const pn_record_header_t* const* records, uint32_t count, pn_error_t& err);
+    void call_process_timed(Stage& s, const pn_record_header_t* const* records, uint32_t count,
+                            pn_error_t& err);
     void call_flush(Stage& s);
     void report_failure(Stage& s, pn_status_t status, const pn_error_t& err, const char* during);
     void check_budget(Stage& s, int64_t took_ns, const char* during);
@@ -217,8 +220,8 @@ private:
     std::vector<RecordQueue> queues_;      // 0 = app, k+1 = stage k
     std::vector<uint64_t> queue_wanted_;   // union of reader masks per queue
     std::vector<std::array<Route, PN_REC_TYPE_COUNT>> routes_;  // per queue, per type
-    std::vector<std::vector<EdgeFifo*>> readers_;        // per queue: every edge reading it
-    bool flushed_ = false;                  // some stage has flushed since the last push
+    std::vector<std::vector<EdgeFifo*>> readers_;               // per queue: every edge reading it
+    bool flushed_ = false;                                      // some stage has flushed since the last push
     uint64_t final_producer_mask_[kRoleCount] = {};  // per stage: types it is the last producer of
     OutputQueue outputs_;
     std::atomic<uint64_t> output_mask_;

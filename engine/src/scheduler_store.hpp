@@ -10,8 +10,8 @@
 
 namespace pednav::engine {
 
-PEDNAV_ALWAYS_INLINE void Scheduler::store(RecordQueue& queue, const Route& route, const pn_record_header_t* r,
-                                           uint32_t q) {
+PEDNAV_ALWAYS_INLINE void Scheduler::store(RecordQueue& queue, const Route& route,
+                                           const pn_record_header_t* r, uint32_t q) {
     if (queue.full()) grow_queue(static_cast<int>(q));  // the edges grow with it: none can be full
     pn_record_header_t* slot = queue.next_slot();
     copy_record(slot, r);

@@ -65,25 +65,28 @@ pn_status_t Scheduler::refuse_record(Stage& s, const pn_record_header_t* r) {
     }
     const Stage::Emission e = r->type < PN_REC_TYPE_COUNT ? s.emits[r->type] : Stage::Emission{};
     if (e.min_size == Stage::kUndeclared) {
-        std::snprintf(why, n, "emitted a record of type %u (%s) that its descriptor does not declare in produces",
+        std::snprintf(why, n,
+                      "emitted a record of type %u (%s) that its descriptor does not declare in produces",
                       r->type, record_type_name(r->type));
         return refuse(s, PN_E_INVALID_ARGUMENT);
     }
     if (r->struct_size < e.min_size || r->struct_size > PN_RECORD_MAX_SIZE) {
-        std::snprintf(why, n, "emitted a %s record with struct_size %u", record_type_name(r->type), r->struct_size);
+        std::snprintf(why, n, "emitted a %s record with struct_size %u", record_type_name(r->type),
+                      r->struct_size);
         return refuse(s, PN_E_INVALID_ARGUMENT);
     }
     if (!e.values_ok(r)) {
         char value[128];
         format_value_problem(find_value_problem(r), value, sizeof value);
-        std::snprintf(why, n, "emitted a %s record at t=%.6f s whose %s", record_type_name(r->type), seconds(r->t_ns),
-                      value);
+        std::snprintf(why, n, "emitted a %s record at t=%.6f s whose %s", record_type_name(r->type),
+                      seconds(r->t_ns), value);
         return refuse(s, PN_E_NUMERIC);
     }
     const int64_t last_of_type = s.last_emitted_t_ns[r->type];
     if (r->t_ns < last_of_type) {
         std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous %s at t=%.6f s",
-                      record_type_name(r->type), seconds(r->t_ns), record_type_name(r->type), seconds(last_of_type));
+                      record_type_name(r->type), seconds(r->t_ns), record_type_name(r->type),
+                      seconds(last_of_type));
         return refuse(s, PN_E_OUT_OF_ORDER);
     }
     std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous output at t=%.6f s",
