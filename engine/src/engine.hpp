@@ -43,6 +43,10 @@ public:
     std::string describe_json() const;
 
 private:
+    // Plugins subtract windows from times and add look-aheads to them; a time
+    // within 2^62 ns (146 years) of zero leaves them that room without overflow.
+    static constexpr int64_t kMaxAbsTimeNs = int64_t{1} << 62;
+    bool input_fine(const pn_record_header_t* record) const;
     pn_status_t check_input(const pn_record_header_t* record, pn_error_t* err);
     // PN_OK, or the stage failure of the last push or flush, in *err.
     pn_status_t stage_failure_status(pn_error_t* err) {
@@ -73,6 +77,7 @@ private:
     std::unique_ptr<Scheduler> scheduler_;
 
     int64_t last_t_ns_[PN_REC_TYPE_COUNT];
+    ValuesCheck input_values_ok_[PN_REC_TYPE_COUNT];  // values_check_for each type
     int64_t last_any_t_ns_ = INT64_MIN;
     uint64_t rejected_inputs_ = 0;
     bool pushed_ = false;  // a record was accepted since create or the last reset

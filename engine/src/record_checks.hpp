@@ -10,7 +10,15 @@
 namespace pednav::engine {
 
 // Smallest struct_size accepted for a record type (the 1.0 size), 0 if unknown.
-uint32_t min_record_size(pn_record_type_t type);
+inline uint32_t min_record_size(pn_record_type_t type) {
+    // Indexed by type; there is no type 0.
+    static constexpr uint32_t kMinSize[PN_REC_TYPE_COUNT] = {
+        0, PN_IMU_MIN_SIZE, PN_MAG_MIN_SIZE, PN_BARO_MIN_SIZE, PN_GNSS_MIN_SIZE, PN_GAIT_PHASE_MIN_SIZE,
+        PN_STEP_MIN_SIZE, PN_ATTITUDE_MIN_SIZE, PN_ATTITUDE_CORRECTION_MIN_SIZE, PN_POSITION_MIN_SIZE,
+        PN_STRIDE_MIN_SIZE};
+    static_assert(PN_REC_STRIDE == 10 && PN_REC_TYPE_COUNT == 11, "one size per type");
+    return type < PN_REC_TYPE_COUNT ? kMinSize[type] : 0;
+}
 const char* record_type_name(pn_record_type_t type);  // "imu", "position", ... or "unknown"
 
 constexpr uint64_t kInputTypes = PN_REC_MASK(PN_REC_IMU) | PN_REC_MASK(PN_REC_MAG) |
@@ -40,8 +48,14 @@ struct ValueProblem {
 
 ValueProblem find_value_problem(const pn_record_header_t* record);
 // The same verdict, !find_value_problem(record), from the same checks with
-// nothing to fill in: the per-sample path.
+// nothing to fill in: the per-sample path. For the per-sample types it first
+// proves the values finite from their sums (one addition per value), and runs
+// the element-by-element checks only when a sum is not finite.
 bool record_values_ok(const pn_record_header_t* record);
+// record_values_ok for one type, without the dispatch on the type: the sink
+// looks it up once per stage and type.
+using ValuesCheck = bool (*)(const pn_record_header_t* record);
+ValuesCheck values_check_for(pn_record_type_t type);
 // "accel_mps2[2] is nan", "cov_enu_m2[4] is -1 (negative variance)"; empty when fine.
 std::string describe(const ValueProblem& problem);
 // The same text into a caller's buffer, without allocating (the sink's path).

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <new>
 
 #include "record_checks.hpp"
+#include "scheduler_store.hpp"
 
 namespace pednav::engine {
 
@@ -21,18 +21,6 @@ int64_t saturating_sub(int64_t a, int64_t b) {
     return (b > 0 && a < INT64_MIN + b) ? INT64_MIN : a - b;
 }
 
-pn_status_t sink_emit(const pnp_sink_t* sink, const pn_record_header_t* record) noexcept {
-    Stage* s = static_cast<Stage*>(sink->sink_data);
-    try {
-        return s->scheduler->accept(*s, record);
-    } catch (const std::bad_alloc&) {  // a queue could not grow
-        std::snprintf(s->sink_problem, sizeof s->sink_problem, "no memory to queue its output");
-        return PN_E_OUT_OF_MEMORY;
-    }
-}
-
-double seconds(int64_t t_ns) { return static_cast<double>(t_ns) * 1e-9; }
-
 int64_t now_ns() {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
         .count();
@@ -44,23 +32,12 @@ void Stage::clear_segment() {
     flushed = false;
     last_stored_t_ns = INT64_MIN;
     last_input_t_ns = INT64_MIN;
+    decided_until_t_ns = INT64_MIN;
     for (auto& t : last_emitted_t_ns) t = INT64_MIN;
-    for (auto& in : forward) in.cursor = 0;
-    for (auto& in : feedback) in.cursor = 0;
-}
-
-// A full output queue loses outputs the app has not polled: said at the 1st,
-// 2nd, 4th, 8th ... drop so that a consumer that keeps falling behind is heard
-// without one line per record.
-void Scheduler::warn_outputs_dropped() noexcept {
-    const uint64_t n = outputs_.dropped();
-    if ((n & (n - 1)) != 0) return;
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "the output queue is full (%zu records): %llu output%s dropped so far; poll more often or "
-                  "raise output_queue_capacity",
-                  outputs_.capacity(), static_cast<unsigned long long>(n), n == 1 ? "" : "s");
-    diagnostics_.warn("engine", line);
+    for (auto& in : forward) in.fifo.clear();
+    for (auto& in : feedback) in.fifo.clear();
+    next_forward_t_ns = kInf;
+    feedback_pending = 0;
 }
 
 Scheduler::Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_capacity, Diagnostics& diagnostics)
@@ -68,13 +45,17 @@ Scheduler::Scheduler(std::vector<std::unique_ptr<Stage>> stages, size_t output_c
       outputs_(output_capacity),
       output_mask_(PN_REC_MASK(PN_REC_POSITION) | PN_REC_MASK(PN_REC_STRIDE) | PN_REC_MASK(PN_REC_STEP)),
       diagnostics_(diagnostics) {
+    if (stages_.size() > static_cast<size_t>(kRoleCount))  // one per role, by the config's construction
+        throw ConfigProblem{PN_E_INTERNAL, "pipeline", "more stages than roles"};
     for (size_t k = 0; k < stages_.size(); ++k) {
         Stage& s = *stages_[k];
         s.scheduler = this;
         s.index = static_cast<int>(k);
         s.sink.sink_data = &s;
-        s.sink.emit = &sink_emit;
+        s.sink.emit = &Scheduler::sink_emit;
+        s.process = s.ops->process;
         s.clear_segment();
+        stage_at_[k] = &s;
     }
     wire();
 }
@@ -96,18 +77,38 @@ void Scheduler::wire() {
     const size_t n = stages_.size();
     queues_.assign(n + 1, RecordQueue(64));
     queue_wanted_.assign(n + 1, 0);
+    routes_.assign(n + 1, {});
+    readers_.assign(n + 1, {});
     for (size_t k = 0; k < n; ++k) {
         Stage& s = *stages_[k];
         const uint64_t consumes = s.descriptor->consumes;
-        if (uint64_t m = consumes & kInputTypes) s.forward.push_back({0, m, 0});
+        if (uint64_t m = consumes & kInputTypes) s.forward.push_back({0, m, EdgeFifo()});
         for (size_t i = 0; i < n; ++i) {
             if (i == k) continue;
             const uint64_t m = consumes & stages_[i]->descriptor->produces;
             if (!m) continue;
-            (i < k ? s.forward : s.feedback).push_back({static_cast<int>(i + 1), m, 0});
+            (i < k ? s.forward : s.feedback).push_back({static_cast<int>(i + 1), m, EdgeFifo()});
         }
-        for (const auto& in : s.forward) queue_wanted_[in.queue] |= in.mask;
-        for (const auto& in : s.feedback) queue_wanted_[in.queue] |= in.mask;
+    }
+    // The edges are in place (the vectors no longer move): route each type of
+    // each queue to the edges that read it, in stage order.
+    for (size_t k = 0; k < n; ++k) {
+        Stage& s = *stages_[k];
+        for (int feedback = 0; feedback < 2; ++feedback) {
+            for (auto& in : feedback ? s.feedback : s.forward) {
+                queue_wanted_[in.queue] |= in.mask;
+                readers_[in.queue].push_back(&in.fifo);
+                for (pn_record_type_t t = 0; t < PN_REC_TYPE_COUNT; ++t) {
+                    if (!(in.mask & PN_REC_MASK(t))) continue;
+                    Route& route = routes_[in.queue][t];
+                    if (feedback)
+                        route.feedback[route.feedback_count++] =
+                            Route::Feedback{&in.fifo, &s.feedback_pending};
+                    else
+                        route.forward[route.forward_count++] = Route::Forward{&in.fifo, &s.next_forward_t_ns};
+                }
+            }
+        }
     }
     // The last producer of each type feeds the output queue.
     uint64_t seen = 0;
@@ -115,6 +116,21 @@ void Scheduler::wire() {
         const uint64_t p = stages_[k]->descriptor->produces;
         final_producer_mask_[k] = p & ~seen;
         seen |= p;
+    }
+    for (size_t k = 0; k < n; ++k) {
+        Stage& s = *stages_[k];
+        for (pn_record_type_t t = 0; t < PN_REC_TYPE_COUNT; ++t) {
+            const uint64_t bit = PN_REC_MASK(t);
+            if (!(s.descriptor->produces & bit) || !min_record_size(t)) continue;
+            Stage::Emission& e = s.emits[t];
+            e.min_size = min_record_size(t);
+            e.to_output = (final_producer_mask_[k] & bit) != 0;
+            e.values_ok = values_check_for(t);
+            if (queue_wanted_[k + 1] & bit) {
+                e.queue = &queues_[k + 1];
+                e.route = &routes_[k + 1][t];
+            }
+        }
     }
     for (auto& s : stages_) s->latency_ns = checked_latency(*s);
 }
@@ -125,82 +141,6 @@ int64_t Scheduler::latency_ns() const {
     return sum;
 }
 
-pn_status_t Scheduler::refuse(Stage& s, pn_status_t status) {
-    char line[320];
-    std::snprintf(line, sizeof line, "misbehaving: %s", s.sink_problem);
-    diagnostics_.warn(s.instance_name.c_str(), line);
-    return status;
-}
-
-// The sink. Every check writes its reason into fixed storage: nothing here
-// allocates but a queue that grows (which sink_emit catches).
-pn_status_t Scheduler::accept(Stage& s, const pn_record_header_t* r) {
-    char* why = s.sink_problem;
-    const size_t n = sizeof s.sink_problem;
-    if (!r) {
-        std::snprintf(why, n, "emitted a NULL record");
-        return refuse(s, PN_E_INVALID_ARGUMENT);
-    }
-    const uint32_t min_size = min_record_size(r->type);
-    if (min_size == 0 || !(s.descriptor->produces & PN_REC_MASK(r->type))) {
-        std::snprintf(why, n, "emitted a record of type %u (%s) that its descriptor does not declare in produces",
-                      r->type, record_type_name(r->type));
-        return refuse(s, PN_E_INVALID_ARGUMENT);
-    }
-    if (r->struct_size < min_size || r->struct_size > PN_RECORD_MAX_SIZE) {
-        std::snprintf(why, n, "emitted a %s record with struct_size %u", record_type_name(r->type), r->struct_size);
-        return refuse(s, PN_E_INVALID_ARGUMENT);
-    }
-    if (!record_values_ok(r)) {
-        char value[128];
-        format_value_problem(find_value_problem(r), value, sizeof value);
-        std::snprintf(why, n, "emitted a %s record at t=%.6f s whose %s", record_type_name(r->type), seconds(r->t_ns),
-                      value);
-        return refuse(s, PN_E_NUMERIC);
-    }
-    // Time order per type, whoever reads the type (a later stage or only the
-    // app); and over every type the stage's queue holds, which later stages
-    // merge by time.
-    int64_t& last_of_type = s.last_emitted_t_ns[r->type];
-    if (r->t_ns < last_of_type) {
-        std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous %s at t=%.6f s",
-                      record_type_name(r->type), seconds(r->t_ns), record_type_name(r->type), seconds(last_of_type));
-        return refuse(s, PN_E_OUT_OF_ORDER);
-    }
-    const uint64_t bit = PN_REC_MASK(r->type);
-    const int q = s.index + 1;
-    if (queue_wanted_[q] & bit) {
-        if (r->t_ns < s.last_stored_t_ns) {
-            std::snprintf(why, n, "emitted a %s record at t=%.6f s, before its previous output at t=%.6f s",
-                          record_type_name(r->type), seconds(r->t_ns), seconds(s.last_stored_t_ns));
-            return refuse(s, PN_E_OUT_OF_ORDER);
-        }
-        s.last_stored_t_ns = r->t_ns;
-        queues_[q].push(r);
-        auto* stored = const_cast<pn_record_header_t*>(queues_[q].at(queues_[q].end() - 1));
-        stored->source_id = static_cast<uint32_t>(q);
-    }
-    last_of_type = r->t_ns;
-    if ((final_producer_mask_[s.index] & output_mask() & bit) && !outputs_.push(r, static_cast<uint32_t>(q)))
-        warn_outputs_dropped();
-    ++s.records_out;
-    return PN_OK;
-}
-
-void Scheduler::push(const pn_record_header_t* r) {
-    if (stopped_) return;
-    for (auto& s : stages_) s->flushed = false;
-    ++records_in_;
-    if (queue_wanted_[0] & PN_REC_MASK(r->type)) queues_[0].push(r);
-    // Release app records strictly before the newest time (see header); a
-    // record at the same time as the previous one releases nothing new.
-    if (r->t_ns > last_app_t_ns_) {
-        app_limit_ns_ = r->t_ns - 1;
-        last_app_t_ns_ = r->t_ns;
-        drain();
-    }
-}
-
 void Scheduler::flush() {
     app_limit_ns_ = kInf;
     drain();
@@ -208,6 +148,7 @@ void Scheduler::flush() {
         if (stopped_) break;
         if (PNP_HAS_SLOT(s->ops, pnp_node_ops_t, flush)) call_flush(*s);
         s->flushed = true;
+        flushed_ = true;
         drain();
     }
     app_limit_ns_ = last_app_t_ns_;  // later pushes must come after the flushed data
@@ -231,6 +172,7 @@ pn_status_t Scheduler::reset(pn_error_t* err) {
         }
     }
     outputs_.clear();
+    flushed_ = false;
     app_limit_ns_ = INT64_MIN;
     last_app_t_ns_ = INT64_MIN;
     failure_ = StageFailure{};
@@ -245,68 +187,48 @@ StageFailure Scheduler::take_failure() {
     return f;
 }
 
-int64_t Scheduler::peek(Stage& s, int64_t limit) {
-    int64_t best = kInf;
-    for (auto& in : s.forward) {
-        const RecordQueue& q = queues_[in.queue];
-        while (in.cursor < q.end() && !(in.mask & PN_REC_MASK(q.at(in.cursor)->type))) ++in.cursor;
-        if (in.cursor < q.end()) best = std::min(best, q.at(in.cursor)->t_ns);
-    }
-    return best <= limit ? best : kInf;
-}
-
-bool Scheduler::deliver_feedback(Stage& s) {
+// One batch of feedback, from the first feedback edge that has any.
+PEDNAV_ALWAYS_INLINE void Scheduler::deliver_feedback(Stage& s) {
+    const pn_record_header_t* batch[kMaxBatch];
     for (auto& in : s.feedback) {
-        const RecordQueue& q = queues_[in.queue];
-        const pn_record_header_t* batch[kMaxBatch];
-        uint32_t count = 0;
-        while (in.cursor < q.end() && count < kMaxBatch) {
-            const pn_record_header_t* r = q.at(in.cursor++);
-            if (in.mask & PN_REC_MASK(r->type)) batch[count++] = r;
-        }
-        if (count) {
-            call_process(s, batch, count);
-            return true;
-        }
+        if (in.fifo.empty()) continue;
+        const uint32_t count = in.fifo.take(batch, kMaxBatch);
+        s.feedback_pending -= count;
+        call_process(s, batch, count);
+        return;
     }
-    return false;
 }
 
-void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
-    // Every record at t_ns, app inputs first, then earlier stages in order.
+// Every record at t_ns, app inputs first, then earlier stages in order.
+PEDNAV_ALWAYS_INLINE void Scheduler::deliver_forward(Stage& s, int64_t t_ns) {
     const pn_record_header_t* batch[kMaxBatch];
     uint32_t count = 0;
-    for (auto& in : s.forward) {
-        const RecordQueue& q = queues_[in.queue];
-        while (in.cursor < q.end() && count < kMaxBatch) {
-            const pn_record_header_t* r = q.at(in.cursor);
-            if (!(in.mask & PN_REC_MASK(r->type))) {
-                ++in.cursor;
-                continue;
-            }
-            if (r->t_ns != t_ns) break;
-            batch[count++] = r;
-            ++in.cursor;
-        }
-    }
+    int64_t next = kInf;
+    for (Stage::Input* in = s.forward.data(), *end = in + s.forward.size(); in != end; ++in)
+        count = in->fifo.take_at(t_ns, batch, count, kMaxBatch, next);
+    s.next_forward_t_ns = next;
     s.last_input_t_ns = t_ns;
+    if (s.latency_ns) s.decided_until_t_ns = saturating_sub(t_ns, s.latency_ns);  // else never read
     call_process(s, batch, count);
 }
 
-void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records, uint32_t count) {
+PEDNAV_ALWAYS_INLINE void Scheduler::call_process(Stage& s, const pn_record_header_t* const* records,
+                                                  uint32_t count) {
     s.records_in += count;
     pn_error_t err;
     err.struct_size = sizeof err;
     err.code = PN_OK;
     err.where[0] = err.message[0] = '\0';
-    pn_status_t st;
-    if (s.call_budget_ns) {
-        const int64_t t0 = now_ns();
-        st = s.ops->process(s.self, records, count, &s.sink, &err);
-        check_budget(s, now_ns() - t0, "process");
-    } else {
-        st = s.ops->process(s.self, records, count, &s.sink, &err);
-    }
+    if (s.call_budget_ns) return call_process_timed(s, records, count, err);
+    const pn_status_t st = s.process(s.self, records, count, &s.sink, &err);
+    if (PN_FAILED(st)) report_failure(s, st, err, "process");
+}
+
+void Scheduler::call_process_timed(Stage& s, const pn_record_header_t* const* records, uint32_t count,
+                                   pn_error_t& err) {
+    const int64_t t0 = now_ns();
+    const pn_status_t st = s.process(s.self, records, count, &s.sink, &err);
+    check_budget(s, now_ns() - t0, "process");
     if (PN_FAILED(st)) report_failure(s, st, err, "process");
 }
 
@@ -375,56 +297,70 @@ void Scheduler::report_failure(Stage& s, pn_status_t status, const pn_error_t& e
 }
 
 void Scheduler::drain() {
-    if (!stages_.empty()) drain_from(0, app_limit_ns_);
+    switch (stages_.size()) {  // the depth is fixed at create: each one compiled with its levels unrolled
+        case 1: drain_level<0, 1>(app_limit_ns_); break;
+        case 2: drain_level<0, 2>(app_limit_ns_); break;
+        case 3: drain_level<0, 3>(app_limit_ns_); break;
+        case 4: drain_level<0, 4>(app_limit_ns_); break;
+        default: break;
+    }
     if ((++drains_ & 63) == 0 || app_limit_ns_ == kInf) release_consumed();
 }
 
-// Depth first: before stage k takes its next record, every stage below it
+// Depth first: before stage K takes its next record, every stage below it
 // consumes what has become available to it. So a stage consumes sample n
 // before any zero-latency stage above it sees sample n+1, and feedback sent
 // up while processing sample n is delivered before the receiver's next record.
-void Scheduler::drain_from(size_t k, int64_t limit) {
-    Stage& s = *stages_[k];
-    const bool last = k + 1 == stages_.size();
+// A stage below with nothing to do is not entered (has_work): the calls made
+// are those of the full recursion, in its order.
+template <int K, int N>
+PEDNAV_ALWAYS_INLINE void Scheduler::drain_level(int64_t limit) {
+    Stage& s = *stage_at_[K];
+    // A zero-latency (or flushed) stage has emitted everything about the
+    // times before its next input; a stage with look-ahead L only what is
+    // about its newest consumed input time minus L. (Neither changes while
+    // the pipeline drains.)
+    const bool passes_limit = s.flushed || s.latency_ns == 0;
     for (;;) {
         if (stopped_) return;
-        const bool had_feedback = !s.feedback.empty() && deliver_feedback(s);
-        const int64_t t = peek(s, limit);
-        if (!last) {
-            // A zero-latency (or flushed) stage has emitted everything about
-            // the times before its next input; a stage with look-ahead L only
-            // what is about its newest consumed input time minus L.
-            const int64_t below = (s.flushed || s.latency_ns == 0) ? (t == kInf ? limit : t - 1)
-                                                                   : saturating_sub(s.last_input_t_ns, s.latency_ns);
-            drain_from(k + 1, below);
+        if (s.feedback_pending) deliver_feedback(s);  // then some feedback edge has records
+        const int64_t t = s.next_forward_t_ns <= limit ? s.next_forward_t_ns : kInf;
+        if constexpr (K + 1 < N) {
+            const int64_t below = passes_limit ? (t == kInf ? limit : t - 1) : s.decided_until_t_ns;
+            if (has_work<K + 1, N>(below)) drain_level<K + 1, N>(below);
         }
         if (t == kInf) {
-            if (had_feedback || has_feedback(s)) continue;
+            // The full recursion also goes round once more after delivering
+            // feedback; that round calls nothing: no forward record can have
+            // come (only earlier stages feed this one), and the stages below
+            // are as the round before left them.
+            if (s.feedback_pending) continue;
             return;
         }
         deliver_forward(s, t);
     }
 }
 
-bool Scheduler::has_feedback(const Stage& s) const {
-    for (const auto& in : s.feedback) {
-        const RecordQueue& q = queues_[in.queue];
-        for (RecordQueue::Seq c = in.cursor; c < q.end(); ++c)
-            if (in.mask & PN_REC_MASK(q.at(c)->type)) return true;
+// Whether drain_level<K, N>(limit) would call a plugin: stage K or one below
+// it has feedback, or a forward record within the limit its upstream passes on.
+template <int K, int N>
+bool Scheduler::has_work(int64_t limit) const {
+    const Stage& s = *stage_at_[K];
+    if (s.feedback_pending || s.next_forward_t_ns <= limit) return true;
+    if constexpr (K + 1 < N) {
+        // Nothing within the limit: what the stage passes on, as drain_level would.
+        if (!s.flushed && s.latency_ns != 0) limit = s.decided_until_t_ns;
+        return has_work<K + 1, N>(limit);
     }
     return false;
 }
 
 void Scheduler::release_consumed() {
     for (size_t q = 0; q < queues_.size(); ++q) {
-        RecordQueue::Seq min_cursor = queues_[q].end();
-        for (auto& s : stages_) {
-            for (const auto& in : s->forward)
-                if (in.queue == static_cast<int>(q)) min_cursor = std::min(min_cursor, in.cursor);
-            for (const auto& in : s->feedback)
-                if (in.queue == static_cast<int>(q)) min_cursor = std::min(min_cursor, in.cursor);
-        }
-        queues_[q].release_until(min_cursor);
+        RecordQueue::Seq oldest_unread = queues_[q].end();
+        for (const EdgeFifo* edge : readers_[q])
+            if (!edge->empty()) oldest_unread = std::min(oldest_unread, queues_[q].seq_of(edge->front()));
+        queues_[q].release_until(oldest_unread);
     }
 }
 

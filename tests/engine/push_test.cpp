@@ -249,6 +249,22 @@ TEST_CASE("feedback: a correction emitted at sample k applies from sample k+1") 
     }
 }
 
+TEST_CASE("feedback released by flush arrives a round late: a correction about sample k applies from k+2") {
+    // The step detector's look-ahead of 4 samples holds samples 28-31 until the flush, which
+    // releases them at once; the step at sample 30 (index 29) is among them.
+    Engine e(full_config(4, 0.1), {fixture_dir("good")});
+    REQUIRE_MESSAGE(e.status() == PN_OK, e.error().message);
+    REQUIRE(pn_engine_set_output_mask(e.get(), PN_REC_MASK(PN_REC_ATTITUDE)) == PN_OK);
+    pn_error_t err = make_error();
+    REQUIRE_MESSAGE(push(e, walk(0, 32), &err) == PN_OK, err.message);
+    REQUIRE(pn_engine_flush(e.get(), &err) == PN_OK);
+    const auto att = of_type(e.poll_all(), PN_REC_ATTITUDE);
+    REQUIRE(att.size() == 32);
+    CHECK(att[20].attitude.heading_rad == doctest::Approx(-0.2));  // pushed one by one: from k+1
+    CHECK(att[30].attitude.heading_rad == doctest::Approx(-0.2));  // released by flush: not yet
+    CHECK(att[31].attitude.heading_rad == doctest::Approx(-0.3));
+}
+
 TEST_CASE("reset empties the queues and replays identically from the start") {
     Engine e(steps_config(2), {fixture_dir("good")});
     REQUIRE(push(e, walk(0, 60)) == PN_OK);

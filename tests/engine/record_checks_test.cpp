@@ -158,3 +158,39 @@ TEST_CASE("a covariance is refused when it is not symmetric or not positive semi
         CHECK(record_values_ok(&pos.header));
     }
 }
+
+TEST_CASE("values whose sum overflows are still finite: the fast path's doubt goes to the exact check") {
+    const double big = std::numeric_limits<double>::max();
+    auto imu = record<pn_imu_t>(PN_REC_IMU);
+    imu.accel_mps2[0] = big;
+    imu.accel_mps2[1] = big;  // the sum overflows to infinity
+    CHECK(record_values_ok(&imu.header));
+    imu.accel_mps2[2] = -std::numeric_limits<double>::infinity();
+    CHECK(!record_values_ok(&imu.header));
+    CHECK(describe(find_value_problem(&imu.header)) == "accel_mps2[2] is -inf");
+    imu.accel_mps2[2] = 0;
+    imu.gyro_radps[0] = std::numeric_limits<double>::infinity();
+    imu.gyro_radps[1] = -std::numeric_limits<double>::infinity();  // their sum is NaN
+    CHECK(!record_values_ok(&imu.header));
+
+    auto pos = record<pn_position_t>(PN_REC_POSITION);
+    pos.vel_enu_mps[1] = std::numeric_limits<double>::quiet_NaN();  // no velocity flag: not checked
+    CHECK(record_values_ok(&pos.header));
+    pos.header.flags = PN_POSITION_FLAG_HAS_VELOCITY;
+    CHECK(!record_values_ok(&pos.header));
+    CHECK(describe(find_value_problem(&pos.header)) == "vel_enu_mps[1] is nan");
+    pos.vel_enu_mps[1] = big;
+    pos.pos_enu_m[0] = big;
+    pos.cov_enu_m2[0] = big;
+    CHECK(record_values_ok(&pos.header));
+
+    auto stride = record<pn_stride_t>(PN_REC_STRIDE);
+    stride.cov_displacement_m2[8] = std::numeric_limits<double>::quiet_NaN();
+    CHECK(!record_values_ok(&stride.header));
+    CHECK(describe(find_value_problem(&stride.header)) == "cov_displacement_m2[8] is nan");
+
+    auto att = attitude_of_norm(1.0);
+    att.gyro_bias_radps[2] = std::numeric_limits<double>::infinity();
+    CHECK(!record_values_ok(&att.header));
+    CHECK(describe(find_value_problem(&att.header)) == "gyro_bias_radps[2] is inf");
+}

@@ -76,3 +76,53 @@ TEST_CASE("output queue stamps the source after the copy, in the queue and the l
                           sizeof(pn_position_t) - sizeof(pn_record_header_t)) == 0);
     }
 }
+
+TEST_CASE("output queue: the newest record of each type survives the reuse of its slot and a full queue") {
+    OutputQueue q(3);
+    auto record = [](pn_record_type_t type, int64_t t_ns) {
+        auto p = pattern(type == PN_REC_STRIDE ? sizeof(pn_stride_t) : sizeof(pn_position_t), type);
+        reinterpret_cast<pn_record_header_t*>(p.data())->t_ns = t_ns;
+        return p;
+    };
+    auto push = [&](pn_record_type_t type, int64_t t_ns) {
+        const auto p = record(type, t_ns);
+        return q.push(reinterpret_cast<const pn_record_header_t*>(p.data()), 2);
+    };
+    pn_output_t out{}, latest{};
+    CHECK_FALSE(q.latest(PN_REC_STRIDE, &latest));
+    REQUIRE(push(PN_REC_STRIDE, 10));
+    // Positions go round the ring: the stride's slot is reused by the third one.
+    for (int64_t t = 11; t <= 16; ++t) {
+        REQUIRE(push(PN_REC_POSITION, t));
+        while (q.pop(&out)) {
+        }
+    }
+    REQUIRE(q.latest(PN_REC_STRIDE, &latest));
+    CHECK(latest.header.t_ns == 10);
+    CHECK(latest.header.struct_size == sizeof(pn_stride_t));
+    CHECK(latest.header.source_id == 2);
+    const auto expected = record(PN_REC_STRIDE, 10);
+    CHECK(std::memcmp(latest.bytes + sizeof(pn_record_header_t), expected.data() + sizeof(pn_record_header_t),
+                      sizeof(pn_stride_t) - sizeof(pn_record_header_t)) == 0);
+    REQUIRE(q.latest(PN_REC_POSITION, &latest));
+    CHECK(latest.header.t_ns == 16);
+    // Full (nobody polls): dropped records still become the newest.
+    REQUIRE(push(PN_REC_POSITION, 17));
+    REQUIRE(push(PN_REC_POSITION, 18));
+    REQUIRE(push(PN_REC_POSITION, 19));
+    CHECK_FALSE(push(PN_REC_POSITION, 20));
+    CHECK_FALSE(push(PN_REC_STRIDE, 21));
+    CHECK(q.dropped() == 2);
+    REQUIRE(q.latest(PN_REC_POSITION, &latest));
+    CHECK(latest.header.t_ns == 20);
+    REQUIRE(q.latest(PN_REC_STRIDE, &latest));
+    CHECK(latest.header.t_ns == 21);
+    // The queue itself kept the three before the drops, in order.
+    for (int64_t t = 17; t <= 19; ++t) {
+        REQUIRE(q.pop(&out));
+        CHECK(out.header.t_ns == t);
+    }
+    CHECK_FALSE(q.pop(&out));
+    q.clear();
+    CHECK_FALSE(q.latest(PN_REC_POSITION, &latest));
+}
