@@ -55,8 +55,8 @@ Profile product(const Profile& a, const Profile& b) {
     return {a.f * b.f, a.df * b.f + a.f * b.df, a.ddf * b.f + 2.0 * a.df * b.df + a.f * b.ddf};
 }
 
-// The rise of the trunk over a step of length step_m on a leg of length
-// leg_length_m (the inverted pendulum): l - sqrt(l^2 - (L/2)^2).
+// The rise of the trunk over a step whose horizontal chord is step_m, on a
+// leg of length leg_length_m (the inverted pendulum): l - sqrt(l^2 - (L/2)^2).
 double pendulum_rise_m(double leg_length_m, double step_m) {
     const double half_m = std::min(0.5 * step_m, leg_length_m);
     return leg_length_m - std::sqrt(leg_length_m * leg_length_m - half_m * half_m);
@@ -102,7 +102,7 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
         s.t0 = ph.t0_s - 0.5 * kWarpS;
         spans_.back().t1 = s.t0;
         std::vector<double> kt{ph.t0_s}, kx, ky, kz, kphase{0.0};
-        std::vector<double> step_scale;  // per step (knot interval): bounce amplitude over bounce_m
+        std::vector<bool> level_step;  // per step (knot interval): on a level stride
         const Eigen::Vector3d p0 = plan.prints[ph.from].p_enu_m;
         std::vector<Eigen::Vector3d> kp{p0};
         s.segment_at_knot.push_back(plan.prints[ph.from].segment);
@@ -117,11 +117,7 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
             }
             // The other foot lands halfway (in time and place), then this foot.
             const Eigen::Vector3d a = plan.prints[q.from].p_enu_m, b = plan.prints[q.to].p_enu_m;
-            const double scale =
-                plan.prints[q.to].kind == StrideKind::level && rise_nominal_m > 0.0
-                    ? pendulum_rise_m(shape_.leg_length_m, 0.5 * (b - a).head<2>().norm()) / rise_nominal_m
-                    : 1.0;
-            step_scale.insert(step_scale.end(), 2, scale);  // both steps of the stride
+            level_step.insert(level_step.end(), 2, plan.prints[q.to].kind == StrideKind::level);
             kt.push_back(0.5 * (t_prev + q.t1_s));
             kp.emplace_back(0.5 * (a + b));
             s.segment_at_knot.push_back(plan.prints[q.to].segment);
@@ -138,6 +134,15 @@ BodyKinematics::BodyKinematics(const GaitPlan& plan, BodyShape shape) : shape_(s
             ky.push_back(kc[k].y());
             kz.push_back(kc[k].z());
             if (k > 0) kphase.push_back(static_cast<double>(k));
+        }
+        // Each level step's bounce over bounce_m: the pendulum's rise over the trunk's own chord, knot to
+        // knot (at a corner shorter than the feet's spacing), against the nominal step's; stairs keep 1.
+        std::vector<double> step_scale;
+        for (size_t k = 1; k < kc.size(); ++k) {
+            const double chord_m = (kc[k] - kc[k - 1]).head<2>().norm();
+            step_scale.push_back(level_step[k - 1] && rise_nominal_m > 0.0
+                                     ? pendulum_rise_m(shape_.leg_length_m, chord_m) / rise_nominal_m
+                                     : 1.0);
         }
         for (size_t k = 1; k < kt.size(); ++k) steps_.push_back(kt[k]);
         s.knot_t = kt;
